@@ -66,7 +66,8 @@ struct Problem {
   std::vector<int64_t> lower;
   std::vector<int64_t> upper;
   std::vector<Cost> cost;
-  // Optional names: either empty, or one (possibly empty) string per node / edge.
+  // Optional names: either empty, or one (possibly empty) string per node / edge. Readers leave
+  // a vector empty when no element has a name, and writers omit empty names.
   std::vector<std::string> node_name;
   std::vector<std::string> edge_name;
 

@@ -62,7 +62,7 @@ class BimdfReader {
         default:
           return std::string();
       }
-    });
+    }, /*location_names_field=*/false);
     return p;
   }
 

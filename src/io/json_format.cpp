@@ -35,22 +35,26 @@ class JsonProblemReader {
     read_nodes(root, p);
     read_edges(root, p);
     detail::validate_or_throw(p, source_, [](const ProblemIssue& issue) {
-      const std::string field = issue.field == "ends" ? "ends" : issue.field;
       switch (issue.where) {
         case ProblemIssue::Where::Node:
-          return "/nodes/" + std::to_string(issue.index) + "/" + field;
+          return "/nodes/" + std::to_string(issue.index) + "/" + issue.field;
         case ProblemIssue::Where::Edge:
-          return "/edges/" + std::to_string(issue.index) + "/" + field;
+          return "/edges/" + std::to_string(issue.index) + "/" + issue.field;
         default:
           return std::string("/");
       }
-    });
+    }, /*location_names_field=*/true);
     return p;
   }
 
   static json parse_document(std::string_view text, const std::string& source) {
     try {
       return json::parse(text.begin(), text.end());
+    } catch (const json::out_of_range& e) {
+      // Numbers beyond double's range; nlohmann gives no position for these.
+      std::string what = e.what();
+      if (const size_t k = what.find("] "); k != std::string::npos) what = what.substr(k + 2);
+      throw InputError(source, "", "invalid JSON: " + what);
     } catch (const json::parse_error& e) {
       // nlohmann reports a byte offset; users want a line.
       const size_t at = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
@@ -121,7 +125,7 @@ class JsonProblemReader {
         name = node["name"].get<std::string>();
         if (!name.empty() && !node_by_name_.emplace(name, static_cast<int>(v)).second)
           fail(path + "/name", "duplicate node name \"" + name + "\"");
-        any_name = true;
+        any_name = any_name || !name.empty();
       }
       p.node_name.push_back(std::move(name));
     }
@@ -174,7 +178,7 @@ class JsonProblemReader {
       if (edge.contains("name")) {
         if (!edge["name"].is_string()) fail(path + "/name", "expected a string, got " + edge["name"].dump());
         name = edge["name"].get<std::string>();
-        any_name = true;
+        any_name = any_name || !name.empty();
       }
       names.push_back(std::move(name));
     }

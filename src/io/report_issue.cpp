@@ -17,7 +17,8 @@ std::string describe_edge(const Problem& p, int e) {
 }
 
 void validate_or_throw(const Problem& p, const std::string& source,
-                       const std::function<std::string(const ProblemIssue&)>& locate) {
+                       const std::function<std::string(const ProblemIssue&)>& locate,
+                       bool location_names_field) {
   const auto issue = validate(p);
   if (!issue) return;
   std::string element;
@@ -32,7 +33,7 @@ void validate_or_throw(const Problem& p, const std::string& source,
       break;
   }
   // Cost messages name the parameter, which reads better after the field name.
-  const std::string field = issue->field == "cost" ? "cost: " : "";
+  const std::string field = issue->field == "cost" && !location_names_field ? "cost: " : "";
   throw InputError(source, locate(*issue), element + field + issue->message);
 }
 

@@ -15,7 +15,9 @@ std::string describe_node(const Problem& p, int v);
 std::string describe_edge(const Problem& p, int e);
 
 // Validates `p`; on an issue throws InputError(source, locate(issue), "<element>: <message>").
+// Cost messages get a "cost: " prefix unless the location already names the field (JSON paths).
 void validate_or_throw(const Problem& p, const std::string& source,
-                       const std::function<std::string(const ProblemIssue&)>& locate);
+                       const std::function<std::string(const ProblemIssue&)>& locate,
+                       bool location_names_field);
 
 }  // namespace bimdf::detail

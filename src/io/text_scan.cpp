@@ -36,6 +36,7 @@ Token TextScanner::peek() {
 Token TextScanner::next() {
   Token t = peek();
   pos_ += t.text.size();
+  if (!t.text.empty()) last_token_line_ = t.line;
   return t;
 }
 
@@ -49,7 +50,7 @@ void TextScanner::fail(int line, const std::string& message) const {
 
 Token TextScanner::expect(const std::string& what) {
   Token t = next();
-  if (t.text.empty()) fail(t.line, "unexpected end of file: expected " + what);
+  if (t.text.empty()) fail(last_token_line_, "unexpected end of file: expected " + what);
   return t;
 }
 

@@ -46,6 +46,7 @@ class TextScanner {
   std::string source_;
   size_t pos_ = 0;
   int line_ = 1;
+  int last_token_line_ = 1;  // where "unexpected end of file" is reported
 };
 
 // Strict conversions of a whole token; false if the token is not exactly such a number.
