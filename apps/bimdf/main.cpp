@@ -5,6 +5,7 @@
 //   exit 0 success, 1 infeasible/unbounded (or a flow that violates the problem),
 //        2 invalid input or usage, 3 internal error.
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,17 @@ void deliver(const OutputOptions& out, const std::string& human, const json& res
     std::cout << text;
   else
     std::cout << human;
+}
+
+// The shortest decimal that reads back as exactly `x` (so 1.135, not 1.1350000000000000).
+std::string shortest_decimal(double x) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+
+std::string bound_text(int64_t b) {
+  return b == kInfinity ? "inf" : b == -kInfinity ? "-inf" : std::to_string(b);
 }
 
 std::string format_name(const std::string& text) {
@@ -84,8 +96,7 @@ std::string info_text(const std::string& path, const std::string& format, const 
       if (array[k]) r += (r.empty() ? "" : ", ") + std::string(name_of(k)) + " " + std::to_string(array[k]);
     return r.empty() ? std::string("none") : r;
   };
-  char demand[64];
-  std::snprintf(demand, sizeof demand, "%.17g", s.total_demand);
+  const std::string demand = shortest_decimal(s.total_demand);
   line("problem", path + " (" + format + ")");
   line("nodes", std::to_string(s.nodes) + " (" + std::to_string(s.nodes_with_demand) +
                     " with non-zero demand, total demand " + demand + ")");
@@ -125,7 +136,9 @@ int run_check(const std::string& problem_path, const std::string& flow_path, con
   for (const BoundViolation& v : check.bound_violations) {
     bounds.push_back({{"edge", v.edge}, {"flow", v.flow}, {"lower", p.lower[v.edge] == -kInfinity ? json("-inf") : json(p.lower[v.edge])},
                       {"upper", p.upper[v.edge] == kInfinity ? json("inf") : json(p.upper[v.edge])}});
-    if (bounds.size() <= kListed) t += "bound violated: " + bounds.back().dump() + "\n";
+    if (bounds.size() <= kListed)
+      t += "edge " + std::to_string(v.edge) + ": flow " + std::to_string(v.flow) + " is outside its bounds [" +
+           bound_text(p.lower[v.edge]) + ", " + bound_text(p.upper[v.edge]) + "]\n";
   }
   for (const ConservationViolation& v : check.conservation_violations) {
     // The net flow is exact in 128 bits; it fits a double's range and is printed as such only
@@ -134,13 +147,17 @@ int run_check(const std::string& problem_path, const std::string& flow_path, con
     conservation.push_back({{"node", v.node},
                             {"net_flow", fits ? json(static_cast<int64_t>(v.net_flow)) : json(static_cast<double>(v.net_flow))},
                             {"demand", v.demand}});
-    if (conservation.size() <= kListed) t += "conservation violated: " + conservation.back().dump() + "\n";
+    if (conservation.size() <= kListed)
+      t += "node " + std::to_string(v.node) + ": net flow " + conservation.back()["net_flow"].dump() +
+           " differs from its demand " + std::to_string(v.demand) + "\n";
   }
   if (bounds.size() > kListed || conservation.size() > kListed) t += "(more violations in the JSON result)\n";
-  char obj[64];
-  std::snprintf(obj, sizeof obj, "%.17g", check.objective);
-  t += std::string(check.feasible() ? "feasible" : "infeasible") + ": " + std::to_string(check.bound_violations.size()) +
-       " bound and " + std::to_string(check.conservation_violations.size()) + " conservation violations, objective " + obj + "\n";
+  if (check.feasible())
+    t += "feasible flow, objective " + shortest_decimal(check.objective) + "\n";
+  else
+    t += "infeasible flow: " + std::to_string(check.bound_violations.size()) + " bound and " +
+         std::to_string(check.conservation_violations.size()) + " conservation violations, objective " +
+         shortest_decimal(check.objective) + "\n";
   const json result = {{"feasible", check.feasible()},
                        {"objective", std::isfinite(check.objective) ? json(check.objective) : json(nullptr)},
                        {"bound_violations", bounds},

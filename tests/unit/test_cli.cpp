@@ -90,10 +90,10 @@ TEST_F(Cli, CheckFeasibleAndInfeasibleFlows) {
 
   const CliRun bad = run("check " + problem + " " + write("bad.json", "[3, 9]"));
   EXPECT_EQ(bad.exit_code, 1);
-  EXPECT_NE(bad.out.find("bound violated: {\"edge\":1,\"flow\":9,\"lower\":0,\"upper\":5}"), std::string::npos) << bad.out;
-  EXPECT_NE(bad.out.find("conservation violated: {\"demand\":2,\"net_flow\":3,\"node\":0}"), std::string::npos);
-  EXPECT_NE(bad.out.find("conservation violated: {\"demand\":0,\"net_flow\":-15,\"node\":1}"), std::string::npos);
-  EXPECT_NE(bad.out.find("infeasible: 1 bound and 2 conservation violations, objective 41.5"), std::string::npos);
+  EXPECT_NE(bad.out.find("edge 1: flow 9 is outside its bounds [0, 5]\n"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("node 0: net flow 3 differs from its demand 2\n"), std::string::npos);
+  EXPECT_NE(bad.out.find("node 1: net flow -15 differs from its demand 0\n"), std::string::npos);
+  EXPECT_NE(bad.out.find("infeasible flow: 1 bound and 2 conservation violations, objective 41.5\n"), std::string::npos);
 }
 
 TEST_F(Cli, CheckRejectsFlowOfWrongLength) {
