@@ -15,41 +15,13 @@
 #include "bimdf/summary.hpp"
 #include "bimdf/version.hpp"
 #include "output.hpp"
+#include "solve_command.hpp"
 
 namespace {
 
 using namespace bimdf;
+using namespace bimdf::cli;
 using nlohmann::json;
-
-enum ExitCode { kOk = 0, kNoSolution = 1, kBadInput = 2, kInternal = 3 };
-
-struct OutputOptions {
-  bool json = false;
-  std::string file;
-};
-
-void add_output_options(CLI::App* cmd, OutputOptions& out) {
-  cmd->add_flag("--json", out.json, "Print the result as JSON on stdout");
-  cmd->add_option("-o,--output", out.file, "Write the result JSON to this file");
-}
-
-// Prints the human text (unless --json) and delivers the JSON where asked.
-void deliver(const OutputOptions& out, const std::string& human, const json& result,
-             const std::vector<std::string>& inputs) {
-  const std::string text = result.dump(2) + "\n";
-  if (!out.file.empty()) cli::write_output_file(out.file, text, inputs);
-  if (out.json)
-    std::cout << text;
-  else
-    std::cout << human;
-}
-
-// The shortest decimal that reads back as exactly `x` (so 1.135, not 1.1350000000000000).
-std::string shortest_decimal(double x) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
 
 std::string bound_text(int64_t b) {
   return b == kInfinity ? "inf" : b == -kInfinity ? "-inf" : std::to_string(b);
@@ -119,7 +91,7 @@ int run_info(const std::string& path, const OutputOptions& out) {
   const std::string text = read_text_file(path);
   const Problem p = parse_problem(text, path);
   const ProblemSummary s = summarize(p);
-  deliver(out, info_text(path, format_name(text), s), info_json(path, format_name(text), s), {path});
+  deliver(out, info_text(path, format_name(text), s), info_json(path, format_name(text), s).dump(2) + "\n", {path});
   return kOk;
 }
 
@@ -162,7 +134,7 @@ int run_check(const std::string& problem_path, const std::string& flow_path, con
                        {"objective", std::isfinite(check.objective) ? json(check.objective) : json(nullptr)},
                        {"bound_violations", bounds},
                        {"conservation_violations", conservation}};
-  deliver(out, t, result, {problem_path, flow_path});
+  deliver(out, t, result.dump(2) + "\n", {problem_path, flow_path});
   return check.feasible() ? kOk : kNoSolution;
 }
 
@@ -222,6 +194,9 @@ int main(int argc, char** argv) {
   convert->add_flag("--libsatsuma", libsatsuma,
                     "Write only what libSatsuma can read (2147483647 as infinity, its cost kinds); fail otherwise");
 
+  SolveCommandOptions solve_options;
+  CLI::App* solve = add_solve_command(app, solve_options);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -233,6 +208,7 @@ int main(int argc, char** argv) {
     if (*info) return run_info(problem, out);
     if (*check) return run_check(problem, flow, out);
     if (*convert) return run_convert(problem, convert_out, to, libsatsuma);
+    if (*solve) return run_solve(solve_options);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kBadInput;

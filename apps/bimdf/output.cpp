@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
+#include <iostream>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -10,6 +12,23 @@
 namespace bimdf::cli {
 
 namespace fs = std::filesystem;
+
+void add_output_options(CLI::App* cmd, OutputOptions& out) {
+  cmd->add_flag("--json", out.json, "Print the result as JSON on stdout");
+  cmd->add_option("-o,--output", out.file, "Write the result JSON to this file");
+}
+
+void deliver(const OutputOptions& out, const std::string& human, const std::string& json_text,
+             const std::vector<std::string>& inputs) {
+  if (!out.file.empty()) write_output_file(out.file, json_text, inputs);
+  std::cout << (out.json ? json_text : human);
+}
+
+std::string shortest_decimal(double x) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
 
 void write_output_file(const std::string& path, const std::string& content,
                        const std::vector<std::string>& inputs) {

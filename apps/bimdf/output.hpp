@@ -1,10 +1,28 @@
 // How the CLI hands results to the user: stdout, or a file that appears complete or not at all.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
 namespace bimdf::cli {
+
+enum ExitCode { kOk = 0, kNoSolution = 1, kBadInput = 2, kInternal = 3 };
+
+// Where a subcommand's result goes (README: the CLI contract).
+struct OutputOptions {
+  bool json = false;  // --json: the result JSON on stdout instead of the human text
+  std::string file;   // -o FILE: the result JSON into FILE
+};
+void add_output_options(CLI::App* cmd, OutputOptions& out);
+
+// Prints `human` (or `json_text` with --json) and writes `json_text` to -o FILE if given,
+// refusing to overwrite any of `inputs`.
+void deliver(const OutputOptions& out, const std::string& human, const std::string& json_text,
+             const std::vector<std::string>& inputs);
+
+// The shortest decimal that reads back as exactly `x` (1.135, not 1.1350000000000000).
+std::string shortest_decimal(double x);
 
 // Thrown for usage errors the CLI detects itself (exit code 2).
 struct UsageError {

@@ -20,6 +20,7 @@
 
 #include "bimdf/error.hpp"
 #include "bimdf/problem.hpp"
+#include "bimdf/solution.hpp"
 
 namespace bimdf {
 
@@ -49,19 +50,6 @@ std::string to_bimdf(const Problem& problem, const BimdfWriteOptions& options = 
 
 // JSON problem text (pretty-printed, names included when present).
 std::string to_json_problem(const Problem& problem);
-
-// A solution as the CLI and library report it.
-enum class SolveStatus { Optimal, Feasible, Infeasible, Unbounded };
-std::string_view status_name(SolveStatus status);  // "optimal", "feasible", …
-
-using StatValue = std::variant<bool, int64_t, double, std::string>;
-
-struct Solution {
-  SolveStatus status = SolveStatus::Feasible;
-  double objective = 0;
-  std::vector<int64_t> flow;                 // one value per edge, input order
-  std::map<std::string, StatValue> stats;    // timings, counts, paths taken
-};
 
 std::string to_json_solution(const Solution& solution);
 

@@ -36,18 +36,5 @@ Problem read_problem_file(const std::string& path) { return parse_problem(read_t
 
 std::vector<int64_t> read_flow_file(const std::string& path) { return parse_flow(read_text_file(path), path); }
 
-std::string_view status_name(SolveStatus status) {
-  switch (status) {
-    case SolveStatus::Optimal:
-      return "optimal";
-    case SolveStatus::Feasible:
-      return "feasible";
-    case SolveStatus::Infeasible:
-      return "infeasible";
-    case SolveStatus::Unbounded:
-      return "unbounded";
-  }
-  return "unknown";
-}
 
 }  // namespace bimdf

@@ -1,0 +1,28 @@
+// `bimdf solve`: options and the command itself.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "output.hpp"
+
+namespace bimdf::cli {
+
+struct SolveCommandOptions {
+  std::string problem;
+  bool approximate = false;
+  int max_deviation = 5;
+  std::string parity = "tjoin";
+  std::string cover = "asymmetric";
+  bool no_simplify = false;
+  bool verbose = false;
+  OutputOptions out;
+};
+
+// Registers the subcommand's options on `app`; returns it.
+CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& options);
+
+// Runs it; returns the exit code (0 solved, 1 infeasible). Throws InputError / UsageError.
+int run_solve(const SolveCommandOptions& options);
+
+}  // namespace bimdf::cli

@@ -1,0 +1,95 @@
+// Solving Bi-MDF problems (problem.hpp).
+//
+// ApproximateSolver implements the paper's fast approximation (§3.5–3.6, §3.10): it returns a
+// verified feasible integer flow, usually within a few percent of the optimum, or a proof that
+// none exists. Per connected component it
+//   1. moves fixed edges (lower = upper) into the demands, eliminates outer edges (§3.2.1) and
+//      collapses chains of pass-through nodes (§3.10);
+//   2. guesses each edge's flow as its cost's integer minimizer within bounds;
+//   3. repairs the guess's parity so that the residual demand b − σ·g is even (§3.6.2);
+//   4. linearizes the costs around the guess with capacity-2 pieces up to `max_deviation` and
+//      tail pieces that keep the whole feasible region (§3.5, §3.6.3);
+//   5. solves the (asymmetric) double cover as a directed min-cost flow with LEMON's network
+//      simplex and lifts the result back to an integer flow (§3.6).
+// The double cover is a restriction of the integer problem, so it can be infeasible although
+// the problem is not (../shared/reference/libsatsuma.md §0). The solver then falls back — the
+// other split of odd capacities, round-to-even parity, the symmetric cover — and if all of
+// them fail it solves the LP relaxation: when that is infeasible, so is the problem. Every
+// "infeasible" answer comes with its proof: an odd total demand over a set of nodes that only
+// even amounts can change, a chain whose bounds do not intersect, or an infeasible relaxation.
+// The rare case where the relaxation is feasible but no cover is (an integer-infeasible problem
+// or a hard feasible one) needs the exact solver and is reported as an error, never as
+// "infeasible".
+//
+// Usage, in LEMON's style: construct on a validated problem (the solver keeps a reference),
+// set options, run(), then query.
+//
+//   bimdf::ApproximateSolver solver(problem);
+//   solver.max_deviation(5);
+//   if (solver.run() == bimdf::SolveStatus::Feasible) use(solver.solution().flow);
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bimdf/problem.hpp"
+#include "bimdf/solution.hpp"
+
+namespace bimdf {
+
+// How the guess is made parity-even (paper §3.6.2).
+enum class ParityRepairMode {
+  SpanningTreeTJoin,  // the paper's minimum-spanning-forest T-join (default)
+  RoundToEven,        // every movable guess to its cheaper even neighbour, then the T-join
+};
+
+// Which double cover the approximation starts with (paper §3.6.2); the others are fallbacks.
+enum class DoubleCoverMode {
+  Asymmetric,  // odd capacities split ⌊c/2⌋ + ⌈c/2⌉ between the two copies (default)
+  Symmetric,   // odd capacities rounded down to even, half on each copy
+};
+
+// Thrown by run() when a stage fails in a way that is neither a solution nor a proof of
+// infeasibility (see the header comment). The message names the component and what failed.
+class SolverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class ApproximateSolver {
+ public:
+  // `problem` must pass validate() and outlive the solver.
+  explicit ApproximateSolver(const Problem& problem);
+
+  // U, the largest deviation from the guess that the linearized costs model exactly at even
+  // sample points (paper §3.6.3). Default 5; must be ≥ 0. Larger U: more arcs, rarely better.
+  ApproximateSolver& max_deviation(int u);
+  // Default SpanningTreeTJoin.
+  ApproximateSolver& parity_repair(ParityRepairMode mode);
+  // Default Asymmetric.
+  ApproximateSolver& double_cover(DoubleCoverMode mode);
+  // Collapse chains of pass-through nodes before solving (§3.10). Default true.
+  ApproximateSolver& collapse_chains(bool enable);
+
+  // Solves; returns Feasible or Infeasible (also available as solution().status). Throws
+  // SolverError as described above and std::overflow_error for values beyond 64-bit sums.
+  SolveStatus run();
+
+  // After run(): status, objective (recomputed in double; NaN when infeasible), the flow (one
+  // value per edge; empty when infeasible) and statistics: "time_*_s" per stage, sizes before
+  // and after simplification, "approximation_path" (which parity/cover combination produced
+  // each component's flow), "fallbacks", and "infeasible_reason" when infeasible.
+  const Solution& solution() const { return solution_; }
+
+ private:
+  const Problem& problem_;
+  int max_deviation_ = 5;
+  ParityRepairMode parity_ = ParityRepairMode::SpanningTreeTJoin;
+  DoubleCoverMode cover_ = DoubleCoverMode::Asymmetric;
+  bool collapse_chains_ = true;
+  Solution solution_;
+};
+
+}  // namespace bimdf

@@ -1,0 +1,67 @@
+// LEMON adapter for min_cost_flow.hpp. Compiled as C++17 (Debian's LEMON 1.3.1 headers do not
+// compile as C++20, DESIGN §6); no LEMON type leaves this file.
+#include "backend/min_cost_flow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <lemon/network_simplex.h>
+#include <lemon/static_graph.h>
+#include <stdexcept>
+#include <utility>
+
+namespace bimdf::detail {
+
+double integer_cost_scale(const std::vector<double>& costs, int num_nodes) {
+  double max_abs = 0;
+  for (double c : costs) max_abs = std::max(max_abs, std::fabs(c));
+  if (max_abs == 0) return 1;
+  const double limit = std::ldexp(1.0, 60) / (static_cast<double>(num_nodes) + 1);
+  // Largest k with max_abs·2^k ≤ limit, capped at 62.
+  int k = static_cast<int>(std::floor(std::log2(limit / max_abs)));
+  k = std::min(k, 62);
+  while (k > -1074 && max_abs * std::ldexp(1.0, k) > limit) --k;
+  return std::ldexp(1.0, k);
+}
+
+MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf) {
+  const int n = mcf.num_nodes(), m = mcf.num_arcs();
+  // StaticDigraph wants arcs sorted by source; remember the permutation.
+  std::vector<std::pair<int, int>> arcs(m);
+  std::vector<int> order(m);
+  for (int i = 0; i < m; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int x, int y) { return mcf.source[x] < mcf.source[y]; });
+  for (int i = 0; i < m; ++i) arcs[i] = {mcf.source[order[i]], mcf.target[order[i]]};
+  lemon::StaticDigraph g;
+  g.build(n, arcs.begin(), arcs.end());
+
+  MinCostFlowResult result;
+  result.cost_scale = integer_cost_scale(mcf.cost, n);
+  lemon::StaticDigraph::ArcMap<int64_t> upper(g), cost(g);
+  lemon::StaticDigraph::NodeMap<int64_t> supply(g);
+  for (int i = 0; i < m; ++i) {
+    const lemon::StaticDigraph::Arc a = g.arc(i);
+    upper[a] = mcf.capacity[order[i]];  // kInfinity is LEMON's INF for int64_t
+    cost[a] = std::llround(mcf.cost[order[i]] * result.cost_scale);
+  }
+  for (int v = 0; v < n; ++v) supply[g.node(v)] = mcf.supply[v];
+
+  lemon::NetworkSimplex<lemon::StaticDigraph, int64_t, int64_t> simplex(g);
+  simplex.upperMap(upper).costMap(cost).supplyMap(supply);
+  switch (simplex.run()) {
+    case decltype(simplex)::INFEASIBLE:
+      result.status = MinCostFlowStatus::Infeasible;
+      return result;
+    case decltype(simplex)::UNBOUNDED:
+      result.status = MinCostFlowStatus::Unbounded;
+      return result;
+    case decltype(simplex)::OPTIMAL:
+      break;
+  }
+  result.status = MinCostFlowStatus::Optimal;
+  result.flow.assign(m, 0);
+  for (int i = 0; i < m; ++i) result.flow[order[i]] = simplex.flow(g.arc(i));
+  return result;
+}
+
+}  // namespace bimdf::detail

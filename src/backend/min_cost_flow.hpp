@@ -1,0 +1,35 @@
+// Minimum-cost flow on a directed network (reduce/directed_mcf.hpp), solved by LEMON's
+// network simplex. This header is LEMON-free so that C++20 code can include it (DESIGN §6).
+//
+// Integer cost scaling — the one place where bimdf turns double costs into the integers a
+// combinatorial solver needs (DESIGN §2): every per-unit cost c becomes llround(c·S) with
+// S = 2^k the largest power of two (k ≤ 62) for which max|c|·S ≤ 2^60 / (nodes + 1). The
+// bound keeps LEMON's node potentials and its artificial big-M costs ((max cost + 1)·nodes)
+// below 2^61, so no int64 arithmetic inside the solver can overflow, while the relative
+// resolution of the largest cost is as fine as that safety allows. Costs that differ by less
+// than 1/S therefore look equal to the solver: results built on this flow must be re-evaluated
+// in double (the reported objective always is).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "reduce/directed_mcf.hpp"
+
+namespace bimdf::detail {
+
+enum class MinCostFlowStatus { Optimal, Infeasible, Unbounded };
+
+struct MinCostFlowResult {
+  MinCostFlowStatus status = MinCostFlowStatus::Infeasible;
+  std::vector<int64_t> flow;  // per arc, when Optimal
+  double cost_scale = 1;      // the S used
+};
+
+// Solves `mcf` exactly (for the scaled integer costs). Deterministic.
+MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf);
+
+// The scale S described above, for the given costs and node count.
+double integer_cost_scale(const std::vector<double>& costs, int num_nodes);
+
+}  // namespace bimdf::detail

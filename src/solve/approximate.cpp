@@ -1,0 +1,159 @@
+#include "solve/approximate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <utility>
+
+#include "backend/min_cost_flow.hpp"
+#include "bimdf/flow.hpp"
+#include "bimdf/solve.hpp"
+#include "reduce/chains.hpp"
+#include "reduce/fixed_edges.hpp"
+#include "reduce/linearize.hpp"
+#include "reduce/outer_edges.hpp"
+
+namespace bimdf::detail {
+namespace {
+
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// The parity/cover combinations in the order they are tried: the requested one first, then the
+// other split of odd capacities, the other parity mode, and the symmetric cover last.
+std::vector<std::pair<ParityMode, DoubleCoverKind>> attempt_order(const ApproximateOptions& o) {
+  const ParityMode other = o.parity == ParityMode::SpanningTreeTJoin
+                               ? ParityMode::RoundToEven
+                               : ParityMode::SpanningTreeTJoin;
+  std::vector<std::pair<ParityMode, DoubleCoverKind>> all = {
+      {o.parity, o.cover},
+      {o.parity, DoubleCoverKind::Asymmetric},
+      {o.parity, DoubleCoverKind::AsymmetricSwapped},
+      {other, DoubleCoverKind::Asymmetric},
+      {other, DoubleCoverKind::AsymmetricSwapped},
+      {o.parity, DoubleCoverKind::Symmetric},
+      {other, DoubleCoverKind::Symmetric}};
+  std::vector<std::pair<ParityMode, DoubleCoverKind>> order;
+  for (const auto& a : all)
+    if (std::find(order.begin(), order.end(), a) == order.end()) order.push_back(a);
+  return order;
+}
+
+// The Bi-MCF flow of `cover`'s min-cost flow, or nothing when the cover is infeasible.
+std::optional<std::vector<int64_t>> solve_cover(const BiMcf& bimcf, DoubleCoverKind kind,
+                                                ComponentOutcome& out) {
+  const DoubleCover dc = build_double_cover(bimcf, kind);
+  out.mcf_arcs = dc.mcf.num_arcs();
+  const MinCostFlowResult r = solve_min_cost_flow(dc.mcf);
+  if (r.status == MinCostFlowStatus::Infeasible) return std::nullopt;
+  if (r.status == MinCostFlowStatus::Unbounded)
+    // Every unbounded piece has a non-negative cost (linearize.hpp), so no negative cycle of
+    // unbounded capacity exists: this is a bug.
+    throw SolverError("internal error: the double cover min-cost flow is unbounded");
+  return dc.lift(r.flow, bimcf.num_arcs());
+}
+
+}  // namespace
+
+std::string parity_mode_name(ParityMode mode) {
+  return mode == ParityMode::SpanningTreeTJoin ? "tjoin" : "round-to-even";
+}
+
+std::string cover_kind_name(DoubleCoverKind kind) {
+  switch (kind) {
+    case DoubleCoverKind::Asymmetric: return "asymmetric";
+    case DoubleCoverKind::AsymmetricSwapped: return "asymmetric-swapped";
+    case DoubleCoverKind::Symmetric: return "symmetric";
+    case DoubleCoverKind::Relaxation: return "relaxation";
+  }
+  return "?";
+}
+
+ComponentOutcome approximate_component(const Problem& component, const ApproximateOptions& opt) {
+  ComponentOutcome out;
+  Stopwatch clock;
+
+  // 1. Simplify. Each stage's problem is the next one's input; lifts run in reverse.
+  const FixedEdgeElimination fixed = eliminate_fixed_edges(component);
+  const OuterEdgeElimination outer = eliminate_outer_edges(fixed.reduced);
+  std::optional<ChainCollapse> chains;
+  if (opt.collapse_chains) {
+    chains = collapse_chains(outer.reduced);
+    if (chains->empty_chain_edge >= 0) {
+      out.proof = {InfeasibilityProof::Kind::EmptyChain, -1,
+                   fixed.original_edge[chains->empty_chain_edge]};
+      return out;
+    }
+  }
+  const Problem& p = chains ? chains->reduced : outer.reduced;
+  out.nodes_solved = p.num_nodes();
+  out.edges_solved = p.num_edges();
+  auto lift_to_component = [&](std::vector<int64_t> x) {
+    if (chains) x = chains->lift(x);
+    return fixed.lift(outer.lift(x));
+  };
+  auto component_node = [&](int v) {  // node of `p` → component node (−1: the boundary node)
+    if (chains) {
+      for (int w = 0; w < static_cast<int>(chains->reduced_node.size()); ++w)
+        if (chains->reduced_node[w] == v) {
+          v = w;
+          break;
+        }
+    }
+    return v == outer.boundary_node ? -1 : v;
+  };
+  out.time_simplify_s = clock.lap();
+
+  // 2. Guess: each cost's integer minimizer within the bounds.
+  std::vector<int64_t> guess(p.num_edges());
+  for (int e = 0; e < p.num_edges(); ++e) guess[e] = p.cost[e].argmin(p.lower[e], p.upper[e]);
+
+  LinearizeOptions lin_opt;
+  lin_opt.max_deviation = opt.max_deviation;
+  for (const auto& [parity, cover] : attempt_order(opt)) {
+    // 3. Parity repair; an odd tree proves infeasibility whatever the mode.
+    clock.lap();
+    const ParityRepair repaired = repair_parity(p, guess, parity);
+    out.time_parity_s += clock.lap();
+    if (repaired.odd_node >= 0) {
+      out.proof = {InfeasibilityProof::Kind::OddParity, component_node(repaired.odd_node), -1};
+      return out;
+    }
+    // 4.–5. Linearize, solve the cover, lift.
+    const Linearization lin = linearize(p, repaired.guess, lin_opt);
+    out.time_linearize_s += clock.lap();
+    ++out.attempts;
+    std::optional<std::vector<int64_t>> y = solve_cover(lin.mcf, cover, out);
+    out.time_mcf_s += clock.lap();
+    if (!y) continue;
+    out.flow = lift_to_component(lin.lift(*y));
+    out.status = SolveStatus::Feasible;
+    out.path = parity_mode_name(parity) + "+" + cover_kind_name(cover);
+    return out;
+  }
+
+  // Every cover failed: the LP relaxation decides whether this can be proven infeasible.
+  const Linearization lin = linearize(p, guess, lin_opt);
+  const bool relaxation_feasible =
+      solve_cover(lin.mcf, DoubleCoverKind::Relaxation, out).has_value();
+  out.time_mcf_s += clock.lap();
+  if (!relaxation_feasible) {
+    out.proof = {InfeasibilityProof::Kind::Relaxation, -1, -1};
+    return out;
+  }
+  throw SolverError(
+      "no double cover of the problem is feasible although its LP relaxation is: deciding "
+      "feasibility needs the exact solver");
+}
+
+}  // namespace bimdf::detail
