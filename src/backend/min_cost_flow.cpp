@@ -11,11 +11,11 @@
 
 namespace bimdf::detail {
 
-double integer_cost_scale(const std::vector<double>& costs, int num_nodes) {
+double integer_cost_scale(const std::vector<double>& costs, int num_nodes, int limit_log2) {
   double max_abs = 0;
   for (double c : costs) max_abs = std::max(max_abs, std::fabs(c));
   if (max_abs == 0) return 1;
-  const double limit = std::ldexp(1.0, 60) / (static_cast<double>(num_nodes) + 1);
+  const double limit = std::ldexp(1.0, limit_log2) / (static_cast<double>(num_nodes) + 1);
   // Largest k with max_abs·2^k ≤ limit, capped at 62.
   int k = static_cast<int>(std::floor(std::log2(limit / max_abs)));
   k = std::min(k, 62);
@@ -36,6 +36,10 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf) {
   g.build(n, arcs.begin(), arcs.end());
 
   MinCostFlowResult result;
+  if (n == 0) {  // LEMON reports an empty network as infeasible
+    result.status = MinCostFlowStatus::Optimal;
+    return result;
+  }
   result.cost_scale = integer_cost_scale(mcf.cost, n);
   lemon::StaticDigraph::ArcMap<int64_t> upper(g), cost(g);
   lemon::StaticDigraph::NodeMap<int64_t> supply(g);

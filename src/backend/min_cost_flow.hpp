@@ -29,7 +29,8 @@ struct MinCostFlowResult {
 // Solves `mcf` exactly (for the scaled integer costs). Deterministic.
 MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf);
 
-// The scale S described above, for the given costs and node count.
-double integer_cost_scale(const std::vector<double>& costs, int num_nodes);
+// The scale S described above, for the given costs and node count; `limit_log2` is 60 for the
+// min-cost flow and smaller for solvers that multiply their duals.
+double integer_cost_scale(const std::vector<double>& costs, int num_nodes, int limit_log2 = 60);
 
 }  // namespace bimdf::detail

@@ -12,6 +12,8 @@
 #include "reduce/fixed_edges.hpp"
 #include "reduce/linearize.hpp"
 #include "reduce/outer_edges.hpp"
+#include "reduce/phase_one.hpp"
+#include "solve/refine.hpp"
 
 namespace bimdf::detail {
 namespace {
@@ -142,7 +144,7 @@ ComponentOutcome approximate_component(const Problem& component, const Approxima
     return out;
   }
 
-  // Every cover failed: the LP relaxation decides whether this can be proven infeasible.
+  // Every cover failed. A cheap proof first: the LP relaxation.
   const Linearization lin = linearize(p, guess, lin_opt);
   const bool relaxation_feasible =
       solve_cover(lin.mcf, DoubleCoverKind::Relaxation, out).has_value();
@@ -151,9 +153,20 @@ ComponentOutcome approximate_component(const Problem& component, const Approxima
     out.proof = {InfeasibilityProof::Kind::Relaxation, -1, -1};
     return out;
   }
-  throw SolverError(
-      "no double cover of the problem is feasible although its LP relaxation is: deciding "
-      "feasibility needs the exact solver");
+  // Last resort, exact either way: phase 1 (phase_one.hpp) refined to its optimum.
+  const ParityRepair repaired = repair_parity(p, guess, opt.parity);
+  const PhaseOne phase_one = build_phase_one(p, repaired.guess);
+  const RefineResult refined = refine(phase_one.problem, phase_one.start);
+  out.time_mcf_s += clock.lap();
+  if (!refined.converged) throw SolverError("phase-1 refinement stopped before converging");
+  if (phase_one.artificial_flow(refined.flow) > 0) {
+    out.proof = {InfeasibilityProof::Kind::PhaseOne, -1, -1};
+    return out;
+  }
+  out.flow = lift_to_component(phase_one.lift(refined.flow));
+  out.status = SolveStatus::Feasible;
+  out.path = "phase-1 refinement";
+  return out;
 }
 
 }  // namespace bimdf::detail

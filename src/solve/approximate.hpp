@@ -23,7 +23,7 @@ struct ApproximateOptions {
 
 // Why a component has no flow; ids are the component's own.
 struct InfeasibilityProof {
-  enum class Kind { None, OddParity, EmptyChain, Relaxation } kind = Kind::None;
+  enum class Kind { None, OddParity, EmptyChain, Relaxation, PhaseOne } kind = Kind::None;
   int node = -1;          // OddParity: a node of the odd set (−1: the outer edges' boundary)
   int edge = -1;          // EmptyChain: an edge of the chain
 };
@@ -40,7 +40,7 @@ struct ComponentOutcome {
   double time_simplify_s = 0, time_parity_s = 0, time_linearize_s = 0, time_mcf_s = 0;
 };
 
-// Throws SolverError (bimdf/solve.hpp) when every cover fails but the relaxation is feasible.
+// Throws SolverError (bimdf/solve.hpp) only on internal failures.
 ComponentOutcome approximate_component(const Problem& component,
                                        const ApproximateOptions& options);
 

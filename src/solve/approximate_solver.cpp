@@ -27,13 +27,17 @@ std::string describe_proof(const detail::InfeasibilityProof& proof,
              "but every edge that can carry a different flow changes it by an even amount";
     }
     case Kind::EmptyChain:
-      return "edge " + std::to_string(part_edge_to_original[proof.edge]) +
+      return "chain: edge " + std::to_string(part_edge_to_original[proof.edge]) +
              " lies on a chain of nodes with demand 0 that forces equal flow on all its edges, "
              "and the bounds of those edges do not intersect";
     case Kind::Relaxation:
-      return "the LP relaxation of the component containing node " +
+      return "relaxation: the LP relaxation of the component containing node " +
              std::to_string(part_node_to_original[0]) +
              " is infeasible: its demands cannot be met within the bounds even fractionally";
+    case Kind::PhaseOne:
+      return "phase 1: the component containing node " +
+             std::to_string(part_node_to_original[0]) + " has no flow: exact phase-1 refinement could not remove the artificial flow "
+             "needed to meet its demands within the bounds";
     case Kind::None:
       break;
   }
