@@ -1,11 +1,19 @@
 #!/usr/bin/env bash
-# Sets up (Debian packages), builds the bimdf CLI and runs the main job on the bundled example:
-# validate a real Bi-MDF instance (the Stanford bunny's quantization model from QuadWild) and
-# print its summary. Usage: scripts/run_example.sh
+# Sets up (Debian packages), builds the bimdf CLI and runs the main job on the bundled example, a
+# real Bi-MDF instance (the Stanford bunny's quantization model from QuadWild): validate it and
+# print its summary, solve it (approximation), write the solution JSON and verify it with
+# `bimdf check`. Usage: scripts/run_example.sh
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/setup.sh"
 build="${BUILD_DIR:-$root/build}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j"${JOBS:-2}" --target bimdf_cli
-"$build/bin/bimdf" info "$root/examples/npm_bunny__flow_noalign_lemon_0.bimdf"
+example="$root/examples/npm_bunny__flow_noalign_lemon_0.bimdf"
+solution="$build/npm_bunny.solution.json"
+"$build/bin/bimdf" info "$example"
+echo
+"$build/bin/bimdf" solve --approx "$example" -o "$solution"
+echo
+"$build/bin/bimdf" check "$example" "$solution"
+echo "solution written to $solution"

@@ -1,0 +1,96 @@
+// `bimdf solve`: the solution JSON (status, objective, flow, stats), exit codes 0/1/2, -o files,
+// the human report, and that the written flow passes `bimdf check`.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_fixture.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+using CliSolve = bimdf::testing::CliFixture;
+using bimdf::testing::CliRun;
+
+const std::string kExample =
+    std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny__flow_noalign_lemon_0.bimdf";
+// x0 on a head–head edge between nodes 0 and 1 (target 2), x1 on a tail–tail loop at node 1:
+// node 0 needs x0 = 2, node 1 then needs 2·x1 = 2.
+const std::string kSmall = "# small\n2\n2\n0\n2\n0 1 1 1 0 inf A 2 1\n1 1 0 0 0 5 Q 0 0.5\n";
+
+TEST_F(CliSolve, JsonSolutionOnStdout) {
+  const CliRun r = run("solve --approx --json " + write("small.bimdf", kSmall));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["status"], "feasible");
+  EXPECT_EQ(j["flow"], json::array({2, 1}));
+  EXPECT_EQ(j["objective"], 0.5);
+  EXPECT_EQ(j["stats"]["approximation_path"], "tjoin+asymmetric (1 component)");
+  EXPECT_EQ(j["stats"]["solver"], "approximate");
+  EXPECT_TRUE(j["stats"]["time_total_s"].is_number());
+}
+
+TEST_F(CliSolve, WritesSolutionFileThatCheckAccepts) {
+  const std::string out = path("bunny.solution.json");
+  const CliRun r = run("solve --approx -o " + out + " " + kExample);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("status        feasible (approximation)\nobjective     ", 0), 0u) << r.out;
+  const json j = json::parse(slurp(out));
+  EXPECT_EQ(j["flow"].size(), 1796u);
+  const CliRun check = run("check --json " + kExample + " " + out);
+  ASSERT_EQ(check.exit_code, 0) << check.out;
+  EXPECT_EQ(json::parse(check.out)["objective"], j["objective"]);
+}
+
+TEST_F(CliSolve, InfeasibleExitsOneWithReason) {
+  // Demand 1 at a node whose only edge is a head–head loop.
+  const std::string p = write("odd.bimdf", "# odd\n1\n1\n1\n0 0 1 1 0 inf A 0 1\n");
+  const CliRun r = run("solve --approx " + p);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("status        infeasible\nreason        parity: node 0 belongs"),
+            std::string::npos)
+      << r.out;
+  const CliRun j = run("solve --approx --json " + p);
+  EXPECT_EQ(j.exit_code, 1);
+  const json s = json::parse(j.out);
+  EXPECT_EQ(s["status"], "infeasible");
+  EXPECT_TRUE(s["objective"].is_null());
+  EXPECT_EQ(s["flow"], json::array());
+}
+
+TEST_F(CliSolve, UsageAndInputErrorsExitTwo) {
+  const std::string p = write("small.bimdf", kSmall);
+  const CliRun exact = run("solve " + p);
+  EXPECT_EQ(exact.exit_code, 2);
+  EXPECT_EQ(exact.err,
+            "error: the exact solver is not available yet in this version; pass --approx for the "
+            "approximation\n");
+  EXPECT_EQ(run("solve --approx --max-deviation -1 " + p).exit_code, 2);
+  EXPECT_EQ(run("solve --approx --parity bogus " + p).exit_code, 2);
+  const std::string bad = write("bad.bimdf", "# t\n1\n0\n1\n0 0 1 0 0 1 A 0 1\n");
+  const CliRun r = run("solve --approx " + bad);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "error: " + bad +
+                       ":5: edge 0: head-tail loop at node 0 has no effect on conservation; "
+                       "expected head-head or tail-tail\n");
+  // Never over an input.
+  EXPECT_EQ(run("solve --approx -o " + p + " " + p).exit_code, 2);
+  EXPECT_EQ(slurp(p), kSmall);
+}
+
+TEST_F(CliSolve, EveryOptionCombinationGivesAVerifiedFlow) {
+  for (const char* opts : {"--parity round-to-even", "--cover symmetric", "--max-deviation 0",
+                           "--no-simplify", "-v"}) {
+    const CliRun r = run(std::string("solve --approx --json ") + opts + " " + kExample);
+    ASSERT_EQ(r.exit_code, 0) << opts << r.err;
+    const std::string sol = write("s.json", r.out);
+    EXPECT_EQ(run("check " + kExample + " " + sol).exit_code, 0) << opts;
+  }
+}
+
+}  // namespace
