@@ -21,7 +21,7 @@
 // or a hard feasible one) needs the exact solver and is reported as an error, never as
 // "infeasible".
 //
-// Usage, in LEMON's style: construct on a validated problem (the solver keeps a reference),
+// Both solvers work in LEMON's style: construct on a validated problem (the solver keeps a reference),
 // set options, run(), then query.
 //
 //   bimdf::ApproximateSolver solver(problem);
@@ -56,6 +56,58 @@ enum class DoubleCoverMode {
 class SolverError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// The exact solver (paper §3.7–3.9): the approximation above, then iterative refinement — each
+// round a minimum-cost circulation of throughflow at most 2 around the current flow, found as a
+// maximum-weight perfect matching (LEMON) — until a round no longer lowers the objective,
+// which proves optimality (paper Thm 3.8). Components are solved independently, on
+// `threads` workers; the flow does not depend on the thread count. A lower bound from the LP
+// relaxation certifies the result.
+//
+//   bimdf::Solver solver(problem);
+//   solver.threads(2).time_limit(10.0);
+//   if (solver.run() == bimdf::SolveStatus::Optimal) use(solver.solution().flow);
+class Solver {
+ public:
+  // `problem` must pass validate() and outlive the solver.
+  explicit Solver(const Problem& problem);
+
+  // Options of the approximation that starts the refinement (see ApproximateSolver).
+  Solver& max_deviation(int u);
+  Solver& parity_repair(ParityRepairMode mode);
+  Solver& double_cover(DoubleCoverMode mode);
+  Solver& collapse_chains(bool enable);
+  // Refinement rounds per component before giving up on proving optimality (status Feasible
+  // with the best flow so far). Default: unlimited (refinement always terminates).
+  Solver& max_rounds(int64_t rounds);
+  // Wall-clock seconds for the whole solve; when exceeded, refinement stops and the best flows
+  // are returned with status Feasible. Default: unlimited.
+  Solver& time_limit(double seconds);
+  // Worker threads for independent components (≥ 1). Default 1.
+  Solver& threads(int count);
+  // Compute the LP-relaxation lower bound ("lower_bound", "relative_gap"). Default true.
+  Solver& lower_bound(bool enable);
+
+  // Returns Optimal, Feasible (a limit was hit) or Infeasible. Throws like ApproximateSolver.
+  SolveStatus run();
+
+  // After run(): as ApproximateSolver's, plus "approximate_objective", "refinement_rounds",
+  // "refinement_rounds_max", "time_refine_build_s", "time_matching_s", "lower_bound",
+  // "relative_gap" and matching sizes.
+  const Solution& solution() const { return solution_; }
+
+ private:
+  const Problem& problem_;
+  int max_deviation_ = 5;
+  ParityRepairMode parity_ = ParityRepairMode::SpanningTreeTJoin;
+  DoubleCoverMode cover_ = DoubleCoverMode::Asymmetric;
+  bool collapse_chains_ = true;
+  int64_t max_rounds_ = -1;
+  double time_limit_s_ = -1;
+  int threads_ = 1;
+  bool lower_bound_ = true;
+  Solution solution_;
 };
 
 class ApproximateSolver {

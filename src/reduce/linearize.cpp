@@ -39,9 +39,11 @@ class PieceWriter {
 };
 
 // Pieces in one direction: `room` is how far the flow may move (kInfinity for unbounded),
-// `at(d)` the cost at deviation d in that direction.
-template <typename CostAt>
-void add_pieces(PieceWriter& out, int64_t room, const CostAt& at, const LinearizeOptions& opt) {
+// `at(d)` the cost at deviation d in that direction, `minimizer_beyond(d)` the deviation ≥ d
+// where the cost is smallest (used by underestimating tails only).
+template <typename CostAt, typename Minimizer>
+void add_pieces(PieceWriter& out, int64_t room, const CostAt& at,
+                const Minimizer& minimizer_beyond, const LinearizeOptions& opt) {
   const int64_t s = opt.step;
   int64_t d = 0;
   while (d + s <= opt.max_deviation && room - d >= s) {
@@ -49,6 +51,17 @@ void add_pieces(PieceWriter& out, int64_t room, const CostAt& at, const Lineariz
     d += s;
   }
   if (!opt.tails || room == d) return;
+  if (opt.underestimating_tails) {
+    const double slope = at(d + 1) - at(d);
+    if (room != kInfinity || slope >= 0) {
+      out.add(room == kInfinity ? kInfinity : room - d, slope);
+      return;
+    }
+    const int64_t m = minimizer_beyond(d);
+    out.add(m - d, slope);
+    out.add(kInfinity, std::max(0.0, at(m + 1) - at(m)));
+    return;
+  }
   if (room == kInfinity) {
     out.add(kInfinity, std::max(0.0, (at(d + s) - at(d)) / static_cast<double>(s)));
   } else {
@@ -74,9 +87,13 @@ Linearization linearize(const Problem& p, std::span<const int64_t> guess,
     const int64_t up_room = p.upper[e] == kInfinity ? kInfinity : p.upper[e] - g;
     const int64_t down_room = p.lower[e] == -kInfinity ? kInfinity : g - p.lower[e];
     PieceWriter forward(lin, e, +1, a, b);
-    add_pieces(forward, up_room, [&](int64_t d) { return c(g + d); }, opt);
+    add_pieces(
+        forward, up_room, [&](int64_t d) { return c(g + d); },
+        [&](int64_t d) { return c.argmin(g + d, kInfinity) - g; }, opt);
     PieceWriter backward(lin, e, -1, End{a.node, !a.head}, End{b.node, !b.head});
-    add_pieces(backward, down_room, [&](int64_t d) { return c(g - d); }, opt);
+    add_pieces(
+        backward, down_room, [&](int64_t d) { return c(g - d); },
+        [&](int64_t d) { return g - c.argmin(-kInfinity, g - d); }, opt);
   }
   lin.mcf.demand.resize(p.num_nodes());
   for (int v = 0; v < p.num_nodes(); ++v)

@@ -31,6 +31,11 @@ struct LinearizeOptions {
   int max_deviation = 5;  // U
   int step = 2;           // s: 2 for the double cover, 1 for exact refinement
   bool tails = true;      // keep the full feasible region with tail pieces beyond D
+  // Tails that never over-estimate the cost at integers (for lower bounds, lower_bound.hpp):
+  // the slope of the first step beyond D, c(g+D+1) − c(g+D) for step 1, on the whole tail —
+  // by convexity that line stays below c — and on an unbounded tail whose slope is negative,
+  // only up to the cost's minimizer m, then the slope c(m+1) − c(m) ≥ 0 from there.
+  bool underestimating_tails = false;
 };
 
 struct Linearization {

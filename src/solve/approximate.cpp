@@ -8,10 +8,7 @@
 #include "backend/min_cost_flow.hpp"
 #include "bimdf/flow.hpp"
 #include "bimdf/solve.hpp"
-#include "reduce/chains.hpp"
-#include "reduce/fixed_edges.hpp"
 #include "reduce/linearize.hpp"
-#include "reduce/outer_edges.hpp"
 #include "reduce/phase_one.hpp"
 #include "solve/refine.hpp"
 
@@ -53,7 +50,7 @@ std::vector<std::pair<ParityMode, DoubleCoverKind>> attempt_order(const Approxim
 
 // The Bi-MCF flow of `cover`'s min-cost flow, or nothing when the cover is infeasible.
 std::optional<std::vector<int64_t>> solve_cover(const BiMcf& bimcf, DoubleCoverKind kind,
-                                                ComponentOutcome& out) {
+                                                ApproximateOutcome& out) {
   const DoubleCover dc = build_double_cover(bimcf, kind);
   out.mcf_arcs = dc.mcf.num_arcs();
   const MinCostFlowResult r = solve_min_cost_flow(dc.mcf);
@@ -81,40 +78,9 @@ std::string cover_kind_name(DoubleCoverKind kind) {
   return "?";
 }
 
-ComponentOutcome approximate_component(const Problem& component, const ApproximateOptions& opt) {
-  ComponentOutcome out;
+ApproximateOutcome approximate(const Problem& p, const ApproximateOptions& opt) {
+  ApproximateOutcome out;
   Stopwatch clock;
-
-  // 1. Simplify. Each stage's problem is the next one's input; lifts run in reverse.
-  const FixedEdgeElimination fixed = eliminate_fixed_edges(component);
-  const OuterEdgeElimination outer = eliminate_outer_edges(fixed.reduced);
-  std::optional<ChainCollapse> chains;
-  if (opt.collapse_chains) {
-    chains = collapse_chains(outer.reduced);
-    if (chains->empty_chain_edge >= 0) {
-      out.proof = {InfeasibilityProof::Kind::EmptyChain, -1,
-                   fixed.original_edge[chains->empty_chain_edge]};
-      return out;
-    }
-  }
-  const Problem& p = chains ? chains->reduced : outer.reduced;
-  out.nodes_solved = p.num_nodes();
-  out.edges_solved = p.num_edges();
-  auto lift_to_component = [&](std::vector<int64_t> x) {
-    if (chains) x = chains->lift(x);
-    return fixed.lift(outer.lift(x));
-  };
-  auto component_node = [&](int v) {  // node of `p` → component node (−1: the boundary node)
-    if (chains) {
-      for (int w = 0; w < static_cast<int>(chains->reduced_node.size()); ++w)
-        if (chains->reduced_node[w] == v) {
-          v = w;
-          break;
-        }
-    }
-    return v == outer.boundary_node ? -1 : v;
-  };
-  out.time_simplify_s = clock.lap();
 
   // 2. Guess: each cost's integer minimizer within the bounds.
   std::vector<int64_t> guess(p.num_edges());
@@ -128,7 +94,7 @@ ComponentOutcome approximate_component(const Problem& component, const Approxima
     const ParityRepair repaired = repair_parity(p, guess, parity);
     out.time_parity_s += clock.lap();
     if (repaired.odd_node >= 0) {
-      out.proof = {InfeasibilityProof::Kind::OddParity, component_node(repaired.odd_node), -1};
+      out.proof = {InfeasibilityProof::Kind::OddParity, repaired.odd_node, -1};
       return out;
     }
     // 4.–5. Linearize, solve the cover, lift.
@@ -138,7 +104,7 @@ ComponentOutcome approximate_component(const Problem& component, const Approxima
     std::optional<std::vector<int64_t>> y = solve_cover(lin.mcf, cover, out);
     out.time_mcf_s += clock.lap();
     if (!y) continue;
-    out.flow = lift_to_component(lin.lift(*y));
+    out.flow = lin.lift(*y);
     out.status = SolveStatus::Feasible;
     out.path = parity_mode_name(parity) + "+" + cover_kind_name(cover);
     return out;
@@ -163,7 +129,7 @@ ComponentOutcome approximate_component(const Problem& component, const Approxima
     out.proof = {InfeasibilityProof::Kind::PhaseOne, -1, -1};
     return out;
   }
-  out.flow = lift_to_component(phase_one.lift(refined.flow));
+  out.flow = phase_one.lift(refined.flow);
   out.status = SolveStatus::Feasible;
   out.path = "phase-1 refinement";
   return out;

@@ -1,0 +1,68 @@
+#include "solve/component.hpp"
+
+#include <chrono>
+
+#include "bimdf/flow.hpp"
+#include "solve/lower_bound.hpp"
+#include "solve/simplify.hpp"
+
+namespace bimdf::detail {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+ComponentResult solve_component(const Problem& component, const ComponentConfig& config) {
+  ComponentResult r;
+  auto t = std::chrono::steady_clock::now();
+  const SimplifiedComponent simplified(component, config.collapse_chains);
+  r.time_simplify_s = seconds_since(t);
+  if (simplified.empty_chain_edge() >= 0) {
+    r.proof = {InfeasibilityProof::Kind::EmptyChain, -1, simplified.empty_chain_edge()};
+    return r;
+  }
+  const Problem& p = simplified.problem();
+  r.nodes_solved = p.num_nodes();
+  r.edges_solved = p.num_edges();
+
+  ApproximateOutcome approx = approximate(p, config.approximate);
+  r.path = approx.path;
+  r.attempts = approx.attempts;
+  r.time_parity_s = approx.time_parity_s;
+  r.time_linearize_s = approx.time_linearize_s;
+  r.time_mcf_s = approx.time_mcf_s;
+  if (approx.status == SolveStatus::Infeasible) {
+    r.proof = approx.proof;
+    if (r.proof.kind == InfeasibilityProof::Kind::OddParity)
+      r.proof.node = simplified.component_node(r.proof.node);
+    return r;
+  }
+  r.approximate_objective = objective(component, simplified.lift(approx.flow));
+  std::vector<int64_t> flow = std::move(approx.flow);
+  r.status = SolveStatus::Feasible;
+  if (config.exact) {
+    RefineResult refined = refine(p, std::move(flow), config.refine);
+    flow = std::move(refined.flow);
+    r.rounds = refined.rounds;
+    r.matching_nodes = refined.matching_nodes;
+    r.matching_edges = refined.matching_edges;
+    r.time_refine_build_s = refined.time_build_s;
+    r.time_matching_s = refined.time_matching_s;
+    if (refined.converged) r.status = SolveStatus::Optimal;
+  }
+  r.flow = simplified.lift(flow);
+  if (config.lower_bound) {
+    t = std::chrono::steady_clock::now();
+    // The simplified problem lacks the fixed edges and closed chain cycles, whose flow is
+    // known: their cost is the difference between the two objectives.
+    r.lower_bound = relaxation_lower_bound(p, flow) + objective(component, r.flow) -
+                    objective(p, flow);
+    r.time_lower_bound_s = seconds_since(t);
+  }
+  return r;
+}
+
+}  // namespace bimdf::detail

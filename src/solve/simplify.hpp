@@ -1,0 +1,39 @@
+// The simplification every solve starts with, per connected component: fixed edges into the
+// demands (fixed_edges.hpp), outer edges onto a boundary node (outer_edges.hpp) and, optionally,
+// chains of pass-through nodes collapsed (chains.hpp). Holds the three reductions so that a
+// flow of the simplified problem lifts back to the component in one call.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "bimdf/problem.hpp"
+#include "reduce/chains.hpp"
+#include "reduce/fixed_edges.hpp"
+#include "reduce/outer_edges.hpp"
+
+namespace bimdf::detail {
+
+class SimplifiedComponent {
+ public:
+  SimplifiedComponent(const Problem& component, bool collapse_chains);
+
+  // The problem to solve: no outer edges, no fixed edges, chains collapsed if asked for.
+  const Problem& problem() const { return chains_ ? chains_->reduced : outer_.reduced; }
+  // An edge (component id) of a chain whose bounds do not intersect, or −1. When ≥ 0 the
+  // component is infeasible and problem() must not be solved.
+  int empty_chain_edge() const { return empty_chain_edge_; }
+  // A flow of problem() → a flow of the component.
+  std::vector<int64_t> lift(std::vector<int64_t> flow) const;
+  // A node of problem() → the component's node, or −1 for the outer edges' boundary node.
+  int component_node(int node) const;
+
+ private:
+  FixedEdgeElimination fixed_;
+  OuterEdgeElimination outer_;
+  std::optional<ChainCollapse> chains_;
+  int empty_chain_edge_ = -1;
+};
+
+}  // namespace bimdf::detail
