@@ -34,31 +34,49 @@ std::string ms(double seconds) {
   return buf;
 }
 
-std::string human_report(const Solution& s, bool verbose) {
+std::string human_report(const Solution& s, bool exact, bool verbose) {
   std::string t;
   auto line = [&](const std::string& key, const std::string& value) {
     t += key + std::string(key.size() < 14 ? 14 - key.size() : 1, ' ') + value + "\n";
   };
   line("status", std::string(status_name(s.status)) +
-                     (s.status == SolveStatus::Feasible ? " (approximation)" : ""));
+                     (!exact && s.status == SolveStatus::Feasible ? " (approximation)" : ""));
   if (s.status == SolveStatus::Infeasible) {
     line("reason", stat_text(s, "infeasible_reason"));
   } else {
     line("objective", shortest_decimal(s.objective));
-    line("path", stat_text(s, "approximation_path"));
+    if (exact) {
+      line("approximation", stat_text(s, "approximate_objective") + " (" +
+                                stat_text(s, "approximation_path") + ")");
+      if (s.stats.count("lower_bound"))
+        line("lower bound", stat_text(s, "lower_bound") + " (relative gap " +
+                                stat_text(s, "relative_gap") + ")");
+      line("rounds", stat_text(s, "refinement_rounds") + " refinement rounds (at most " +
+                         stat_text(s, "refinement_rounds_max") + " in one component)");
+    } else {
+      line("path", stat_text(s, "approximation_path"));
+    }
   }
   line("time", ms(stat_seconds(s, "time_total_s")) + " (read " + ms(stat_seconds(s, "time_read_s")) +
                    ", solve " + ms(stat_seconds(s, "time_solve_s")) + ")");
   if (verbose) {
-    line("components", stat_text(s, "components"));
+    line("components", stat_text(s, "components") + " (" + stat_text(s, "threads") + " threads)");
     line("solved size", stat_text(s, "nodes_solved") + " nodes, " + stat_text(s, "edges_solved") +
                             " edges after simplification");
-    line("stages", "simplify " + ms(stat_seconds(s, "time_simplify_s")) + ", parity " +
-                       ms(stat_seconds(s, "time_parity_s")) + ", linearize " +
-                       ms(stat_seconds(s, "time_linearize_s")) + ", min-cost flow " +
-                       ms(stat_seconds(s, "time_min_cost_flow_s")));
+    std::string stages = "simplify " + ms(stat_seconds(s, "time_simplify_s")) + ", parity " +
+                         ms(stat_seconds(s, "time_parity_s")) + ", linearize " +
+                         ms(stat_seconds(s, "time_linearize_s")) + ", min-cost flow " +
+                         ms(stat_seconds(s, "time_min_cost_flow_s"));
+    if (exact)
+      stages += ", refinement build " + ms(stat_seconds(s, "time_refine_build_s")) +
+                ", matching " + ms(stat_seconds(s, "time_matching_s")) + ", lower bound " +
+                ms(stat_seconds(s, "time_lower_bound_s"));
+    line("stages", stages + " (summed over components)");
     line("covers", stat_text(s, "double_covers_solved") + " solved, " + stat_text(s, "fallbacks") +
                        " components needed a fallback");
+    if (exact)
+      line("matching", "largest " + stat_text(s, "matching_nodes_max") + " nodes, " +
+                           stat_text(s, "matching_edges_max") + " edges");
   }
   return t;
 }
@@ -70,8 +88,7 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
       "solve", "Solve a problem: a verified integer flow and its objective (JSON solution)");
   cmd->add_option("PROBLEM", o.problem, "Problem file (.bimdf or .json)")->required();
   cmd->add_flag("--approx", o.approximate,
-                "Fast approximation only (double cover, paper §3.6); required until the exact "
-                "solver lands");
+                "Fast approximation only (double cover, paper §3.6) instead of the optimum");
   cmd->add_option("--max-deviation", o.max_deviation,
                   "U: deviation from the guess modelled exactly at even points")
       ->default_val(5)
@@ -83,37 +100,53 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
       ->default_val("asymmetric")
       ->check(CLI::IsMember({"asymmetric", "symmetric"}));
   cmd->add_flag("--no-simplify", o.no_simplify, "Do not collapse chains of pass-through nodes");
+  cmd->add_option("--threads", o.threads, "Worker threads for independent components")
+      ->default_val(1)
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--max-rounds", o.max_rounds,
+                  "Refinement rounds per component before returning the best flow as feasible")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--time-limit", o.time_limit,
+                  "Seconds before refinement stops and returns the best flow as feasible")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--no-lower-bound", o.no_lower_bound, "Skip the LP-relaxation lower bound");
   cmd->add_flag("-v,--verbose", o.verbose, "Print sizes and the time of every stage");
   add_output_options(cmd, o.out);
   return cmd;
 }
 
 int run_solve(const SolveCommandOptions& o) {
-  if (!o.approximate)
-    throw UsageError{
-        "the exact solver is not available yet in this version; pass --approx for the "
-        "approximation"};
   const auto start = std::chrono::steady_clock::now();
   const Problem problem = read_problem_file(o.problem);
   const double read_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  ApproximateSolver solver(problem);
-  solver.max_deviation(o.max_deviation)
-      .parity_repair(o.parity == "tjoin" ? ParityRepairMode::SpanningTreeTJoin
-                                         : ParityRepairMode::RoundToEven)
-      .double_cover(o.cover == "asymmetric" ? DoubleCoverMode::Asymmetric
-                                            : DoubleCoverMode::Symmetric)
-      .collapse_chains(!o.no_simplify);
-  const SolveStatus status = solver.run();
-  Solution s = solver.solution();
+  const ParityRepairMode parity = o.parity == "tjoin" ? ParityRepairMode::SpanningTreeTJoin
+                                                      : ParityRepairMode::RoundToEven;
+  const DoubleCoverMode cover =
+      o.cover == "asymmetric" ? DoubleCoverMode::Asymmetric : DoubleCoverMode::Symmetric;
+  Solution s;
+  if (o.approximate) {
+    ApproximateSolver solver(problem);
+    solver.max_deviation(o.max_deviation).parity_repair(parity).double_cover(cover);
+    solver.collapse_chains(!o.no_simplify).run();
+    s = solver.solution();
+  } else {
+    Solver solver(problem);
+    solver.max_deviation(o.max_deviation).parity_repair(parity).double_cover(cover);
+    solver.collapse_chains(!o.no_simplify).threads(o.threads).lower_bound(!o.no_lower_bound);
+    if (o.max_rounds > 0) solver.max_rounds(o.max_rounds);
+    if (o.time_limit > 0) solver.time_limit(o.time_limit);
+    solver.run();
+    s = solver.solution();
+  }
   s.stats["time_read_s"] = read_s;
   s.stats["time_solve_s"] = std::get<double>(s.stats["time_total_s"]);
   s.stats["time_total_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  s.stats["solver"] = std::string("approximate");
-  deliver(o.out, human_report(s, o.verbose), to_json_solution(s), {o.problem});
-  return status == SolveStatus::Infeasible ? kNoSolution : kOk;
+  s.stats["solver"] = std::string(o.approximate ? "approximate" : "exact");
+  deliver(o.out, human_report(s, !o.approximate, o.verbose), to_json_solution(s), {o.problem});
+  return s.status == SolveStatus::Infeasible ? kNoSolution : kOk;
 }
 
 }  // namespace bimdf::cli

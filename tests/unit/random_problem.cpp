@@ -74,9 +74,9 @@ Cost random_cost(std::mt19937_64& rng, const RandomProblemOptions& o, int64_t lo
 
 Problem random_problem(std::mt19937_64& rng, const RandomProblemOptions& o) {
   Problem p;
-  const int n = 1 + static_cast<int>(rng() % o.max_nodes);
+  const int n = o.min_nodes + static_cast<int>(rng() % (o.max_nodes - o.min_nodes + 1));
   for (int v = 0; v < n; ++v) p.add_node(static_cast<int64_t>(rng() % 7) - 3);
-  const int m = static_cast<int>(rng() % (o.max_edges + 1));
+  const int m = o.min_edges + static_cast<int>(rng() % (o.max_edges - o.min_edges + 1));
   for (int e = 0; e < m; ++e) {
     End a{static_cast<int>(rng() % n), rng() % 2 == 0};
     std::optional<End> b;
@@ -119,6 +119,16 @@ Problem random_problem(std::mt19937_64& rng, const RandomProblemOptions& o) {
     if (all_empty(p.edge_name)) p.edge_name.clear();
   }
   return p;
+}
+
+void plant_feasible_demands(Problem& p, std::mt19937_64& rng) {
+  std::fill(p.demand.begin(), p.demand.end(), 0);
+  for (int e = 0; e < p.num_edges(); ++e) {
+    const int64_t lo = std::max<int64_t>(p.lower[e], -3), hi = std::min<int64_t>(p.upper[e], 5);
+    const int64_t x = lo + static_cast<int64_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
+    p.demand[p.end_a[e].node] += p.end_a[e].sign() * x;
+    if (!p.is_outer(e)) p.demand[p.end_b[e].node] += p.end_b[e].sign() * x;
+  }
 }
 
 }  // namespace bimdf::testing

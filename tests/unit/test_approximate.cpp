@@ -78,18 +78,6 @@ void compare(const Problem& p, ApproximateSolver& solver, SuiteReport& report,
                              ")\n" + to_bimdf(p) + "\n";
 }
 
-// Half the instances get demands σ·x for a random x within bounds, so that feasible problems
-// (which random demands rarely give) are well represented.
-void plant_feasible_demands(Problem& p, std::mt19937_64& rng) {
-  std::fill(p.demand.begin(), p.demand.end(), 0);
-  for (int e = 0; e < p.num_edges(); ++e) {
-    const int64_t lo = std::max<int64_t>(p.lower[e], -3), hi = std::min<int64_t>(p.upper[e], 5);
-    const int64_t x = lo + static_cast<int64_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
-    p.demand[p.end_a[e].node] += p.end_a[e].sign() * x;
-    if (!p.is_outer(e)) p.demand[p.end_b[e].node] += p.end_b[e].sign() * x;
-  }
-}
-
 double percentile(std::vector<double> v, double q) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
@@ -105,7 +93,7 @@ SuiteReport run_suite(uint64_t seed, int count, ParityRepairMode parity, DoubleC
   SuiteReport report;
   for (int i = 0; i < count; ++i) {
     Problem p = testing::random_problem(rng, opt);
-    if (i % 2) plant_feasible_demands(p, rng);
+    if (i % 2) testing::plant_feasible_demands(p, rng);
     ApproximateSolver solver(p);
     solver.parity_repair(parity).double_cover(cover).max_deviation(max_deviation);
     compare(p, solver, report, "seed " + std::to_string(seed) + " instance " + std::to_string(i));

@@ -35,6 +35,28 @@ TEST_F(CliSolve, JsonSolutionOnStdout) {
   EXPECT_TRUE(j["stats"]["time_total_s"].is_number());
 }
 
+TEST_F(CliSolve, ExactByDefault) {
+  const CliRun r = run("solve --json " + write("small.bimdf", kSmall));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["status"], "optimal");
+  EXPECT_EQ(j["flow"], json::array({2, 1}));
+  EXPECT_EQ(j["objective"], 0.5);
+  EXPECT_EQ(j["stats"]["solver"], "exact");
+  EXPECT_LE(j["stats"]["lower_bound"].get<double>(), 0.5);
+  EXPECT_GE(j["stats"]["approximate_objective"].get<double>(), 0.5);
+}
+
+TEST_F(CliSolve, ExactOnTheBundledExampleMatchesTheKnownOptimum) {
+  const CliRun r = run("solve --threads 2 " + kExample);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // ../shared/data/instances/README.md: optimum 0.886439270.
+  EXPECT_EQ(r.out.rfind("status        optimal\nobjective     0.88643927", 0), 0u) << r.out;
+  const CliRun limited = run("solve --json --max-rounds 1 " + kExample);
+  ASSERT_EQ(limited.exit_code, 0);
+  EXPECT_EQ(json::parse(limited.out)["status"], "feasible");
+}
+
 TEST_F(CliSolve, WritesSolutionFileThatCheckAccepts) {
   const std::string out = path("bunny.solution.json");
   const CliRun r = run("solve --approx -o " + out + " " + kExample);
@@ -65,11 +87,8 @@ TEST_F(CliSolve, InfeasibleExitsOneWithReason) {
 
 TEST_F(CliSolve, UsageAndInputErrorsExitTwo) {
   const std::string p = write("small.bimdf", kSmall);
-  const CliRun exact = run("solve " + p);
-  EXPECT_EQ(exact.exit_code, 2);
-  EXPECT_EQ(exact.err,
-            "error: the exact solver is not available yet in this version; pass --approx for the "
-            "approximation\n");
+  EXPECT_EQ(run("solve --threads 0 " + p).exit_code, 2);
+  EXPECT_EQ(run("solve --time-limit -1 " + p).exit_code, 2);
   EXPECT_EQ(run("solve --approx --max-deviation -1 " + p).exit_code, 2);
   EXPECT_EQ(run("solve --approx --parity bogus " + p).exit_code, 2);
   const std::string bad = write("bad.bimdf", "# t\n1\n0\n1\n0 0 1 0 0 1 A 0 1\n");
