@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up (Debian packages), builds the bimdf CLI and runs the main job on the bundled example, a
 # real Bi-MDF instance (the Stanford bunny's quantization model from QuadWild): validate it and
-# print its summary, solve it (approximation), write the solution JSON and verify it with
+# print its summary, solve it exactly, write the solution JSON and verify it with
 # `bimdf check`. Usage: scripts/run_example.sh
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -13,7 +13,7 @@ example="$root/examples/npm_bunny__flow_noalign_lemon_0.bimdf"
 solution="$build/npm_bunny.solution.json"
 "$build/bin/bimdf" info "$example"
 echo
-"$build/bin/bimdf" solve --approx "$example" -o "$solution"
+"$build/bin/bimdf" solve "$example" -o "$solution"
 echo
 "$build/bin/bimdf" check "$example" "$solution"
 echo "solution written to $solution"
