@@ -1,0 +1,189 @@
+// Each reduction together with its lift (DESIGN §3): solve the reduced problem by brute force,
+// lift the flow back, and check that it is feasible for the original with the same cost — and
+// that the reduction loses nothing: both optima agree, and so does infeasibility.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bimdf/flow.hpp"
+#include "brute_force.hpp"
+#include "random_problem.hpp"
+#include "reduce/chains.hpp"
+#include "reduce/components.hpp"
+#include "reduce/double_cover.hpp"
+#include "reduce/fixed_edges.hpp"
+#include "reduce/linearize.hpp"
+#include "reduce/outer_edges.hpp"
+#include "reduce/parity.hpp"
+#include "backend/min_cost_flow.hpp"
+
+namespace bimdf {
+namespace {
+
+using testing::brute_force;
+
+constexpr int kInstances = 1500;
+
+Problem tiny(std::mt19937_64& rng, int i) {
+  testing::RandomProblemOptions opt;
+  opt.max_nodes = 4;
+  opt.max_edges = 6;
+  Problem p = testing::random_problem(rng, opt);
+  if (i % 2) testing::plant_feasible_demands(p, rng);
+  return p;
+}
+
+// Splits up to two edges (a, b) into (a, w) and (w, b) through a new pass-through node w, so
+// that chains occur often. The second half gets a random cost and bounds of its own.
+Problem subdivided(Problem p, std::mt19937_64& rng) {
+  for (int k = 0; k < 2 && p.num_edges() > 0; ++k) {
+    const int e = static_cast<int>(rng() % p.num_edges());
+    if (p.is_outer(e)) continue;
+    const int w = p.add_node(0);
+    const End b = p.end_b[e];
+    p.end_b[e] = End{w, true};
+    const int64_t lo = -static_cast<int64_t>(rng() % 3), up = lo + 2 + rng() % 6;
+    p.add_edge(End{w, false}, b, lo, up, testing::random_cost(rng, {}, lo, up));
+  }
+  return p;
+}
+
+bool near(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::max(1.0, std::fabs(b)); }
+
+// The reduced problem's optimum, lifted, is feasible for the original and as good as its
+// optimum; infeasibility is preserved. `lift` maps a reduced flow to an original one.
+template <typename Lift>
+void expect_equivalent(const Problem& original, const Problem& reduced, const Lift& lift,
+                       int instance) {
+  const auto truth = brute_force(original);
+  const auto r = brute_force(reduced);
+  ASSERT_EQ(r.feasible, truth.feasible) << "instance " << instance;
+  if (!r.feasible) return;
+  const std::vector<int64_t> x = lift(r.flow);
+  const FlowCheck check = check_flow(original, x);
+  ASSERT_TRUE(check.feasible()) << "instance " << instance;
+  EXPECT_TRUE(near(check.objective, truth.optimum)) << "instance " << instance;
+}
+
+TEST(Reductions, FixedEdgesLiftExactly) {
+  std::mt19937_64 rng(21);
+  for (int i = 0; i < kInstances; ++i) {
+    const Problem p = tiny(rng, i);
+    const auto red = detail::eliminate_fixed_edges(p);
+    for (int e = 0; e < red.reduced.num_edges(); ++e)
+      ASSERT_LT(red.reduced.lower[e], red.reduced.upper[e]);
+    expect_equivalent(p, red.reduced, [&](const auto& f) { return red.lift(f); }, i);
+  }
+}
+
+TEST(Reductions, OuterEdgesLiftExactly) {
+  std::mt19937_64 rng(22);
+  int with_outer = 0;
+  for (int i = 0; i < kInstances; ++i) {
+    const Problem p = tiny(rng, i);
+    const auto red = detail::eliminate_outer_edges(p);
+    for (int e = 0; e < red.reduced.num_edges(); ++e) ASSERT_FALSE(red.reduced.is_outer(e));
+    with_outer += red.boundary_node >= 0;
+    expect_equivalent(p, red.reduced, [&](const auto& f) { return red.lift(f); }, i);
+  }
+  EXPECT_GT(with_outer, kInstances / 4);
+}
+
+TEST(Reductions, ChainsLiftExactly) {
+  std::mt19937_64 rng(23);
+  int collapsed = 0;
+  for (int i = 0; i < kInstances; ++i) {
+    const Problem p = detail::eliminate_outer_edges(subdivided(tiny(rng, i), rng)).reduced;
+    const auto red = detail::collapse_chains(p);
+    collapsed += red.collapsed_nodes > 0;
+    if (red.empty_chain_edge >= 0) {
+      EXPECT_FALSE(brute_force(p).feasible) << "instance " << i;
+      continue;
+    }
+    expect_equivalent(p, red.reduced, [&](const auto& f) { return red.lift(f); }, i);
+  }
+  EXPECT_GT(collapsed, kInstances / 2);
+}
+
+TEST(Reductions, ComponentsLiftExactly) {
+  std::mt19937_64 rng(24);
+  for (int i = 0; i < kInstances; ++i) {
+    const Problem p = tiny(rng, i);
+    const auto split = detail::split_components(p);
+    std::vector<std::vector<int64_t>> flows;
+    bool feasible = true;
+    for (const Problem& part : split.parts) {
+      const auto r = brute_force(part);
+      feasible = feasible && r.feasible;
+      flows.push_back(r.flow);
+    }
+    const auto truth = brute_force(p);
+    ASSERT_EQ(feasible, truth.feasible) << "instance " << i;
+    if (!feasible) continue;
+    const FlowCheck check = check_flow(p, split.lift(flows));
+    ASSERT_TRUE(check.feasible());
+    EXPECT_TRUE(near(check.objective, truth.optimum)) << "instance " << i;
+  }
+}
+
+// Parity repair keeps the guess within bounds and makes every residual even, or proves the
+// problem infeasible.
+TEST(Reductions, ParityRepairEvensResidualsOrProvesInfeasibility) {
+  std::mt19937_64 rng(25);
+  for (int i = 0; i < kInstances; ++i) {
+    const Problem p = detail::eliminate_outer_edges(tiny(rng, i)).reduced;
+    std::vector<int64_t> g(p.num_edges());
+    for (int e = 0; e < p.num_edges(); ++e) g[e] = p.cost[e].argmin(p.lower[e], p.upper[e]);
+    for (auto mode : {detail::ParityMode::SpanningTreeTJoin, detail::ParityMode::RoundToEven}) {
+      const auto r = detail::repair_parity(p, g, mode);
+      if (r.odd_node >= 0) {
+        EXPECT_FALSE(brute_force(p).feasible) << "instance " << i;
+        continue;
+      }
+      std::vector<int64_t> residual = p.demand;
+      for (int e = 0; e < p.num_edges(); ++e) {
+        ASSERT_GE(r.guess[e], p.lower[e]);
+        ASSERT_LE(r.guess[e], p.upper[e]);
+        residual[p.end_a[e].node] -= p.end_a[e].sign() * r.guess[e];
+        residual[p.end_b[e].node] -= p.end_b[e].sign() * r.guess[e];
+      }
+      for (int64_t b : residual) ASSERT_EQ(b % 2, 0) << "instance " << i;
+    }
+  }
+}
+
+// Linearization + any double cover: whenever the cover's min-cost flow exists, it lifts to a
+// feasible flow of the problem; the relaxation is feasible whenever the problem is.
+TEST(Reductions, DoubleCoversLiftToFeasibleFlows) {
+  std::mt19937_64 rng(26);
+  int lifted = 0;
+  for (int i = 0; i < kInstances; ++i) {
+    const Problem p = detail::eliminate_outer_edges(tiny(rng, i)).reduced;
+    std::vector<int64_t> g(p.num_edges());
+    for (int e = 0; e < p.num_edges(); ++e) g[e] = p.cost[e].argmin(p.lower[e], p.upper[e]);
+    const auto repaired = detail::repair_parity(p, g, detail::ParityMode::SpanningTreeTJoin);
+    if (repaired.odd_node >= 0) continue;
+    const auto lin = detail::linearize(p, repaired.guess, {});
+    const bool feasible = brute_force(p).feasible;
+    for (auto kind : {detail::DoubleCoverKind::Asymmetric,
+                      detail::DoubleCoverKind::AsymmetricSwapped,
+                      detail::DoubleCoverKind::Symmetric, detail::DoubleCoverKind::Relaxation}) {
+      const auto dc = detail::build_double_cover(lin.mcf, kind);
+      const auto r = detail::solve_min_cost_flow(dc.mcf);
+      if (kind == detail::DoubleCoverKind::Relaxation) {
+        if (feasible) {
+          EXPECT_EQ(r.status, detail::MinCostFlowStatus::Optimal) << "instance " << i;
+        }
+        continue;
+      }
+      if (r.status != detail::MinCostFlowStatus::Optimal) continue;
+      const auto x = lin.lift(dc.lift(r.flow, lin.mcf.num_arcs()));
+      ASSERT_TRUE(check_flow(p, x).feasible()) << "instance " << i;
+      ++lifted;
+    }
+  }
+  EXPECT_GT(lifted, kInstances);
+}
+
+}  // namespace
+}  // namespace bimdf
