@@ -59,6 +59,18 @@ std::string human_report(const Solution& s, bool exact, bool verbose) {
   }
   line("time", ms(stat_seconds(s, "time_total_s")) + " (read " + ms(stat_seconds(s, "time_read_s")) +
                    ", solve " + ms(stat_seconds(s, "time_solve_s")) + ")");
+  if (s.status != SolveStatus::Infeasible) {
+    const double approx_s = stat_seconds(s, "time_simplify_s") + stat_seconds(s, "time_parity_s") +
+                            stat_seconds(s, "time_linearize_s") +
+                            stat_seconds(s, "time_min_cost_flow_s");
+    std::string stages = "approximation " + ms(approx_s);
+    if (exact)
+      stages += ", refinement " +
+                ms(stat_seconds(s, "time_refine_build_s") + stat_seconds(s, "time_matching_s")) +
+                " (matching " + ms(stat_seconds(s, "time_matching_s")) + "), lower bound " +
+                ms(stat_seconds(s, "time_lower_bound_s"));
+    line("stages", stages);
+  }
   if (verbose) {
     line("components", stat_text(s, "components") + " (" + stat_text(s, "threads") + " threads)");
     line("solved size", stat_text(s, "nodes_solved") + " nodes, " + stat_text(s, "edges_solved") +
@@ -71,7 +83,7 @@ std::string human_report(const Solution& s, bool exact, bool verbose) {
       stages += ", refinement build " + ms(stat_seconds(s, "time_refine_build_s")) +
                 ", matching " + ms(stat_seconds(s, "time_matching_s")) + ", lower bound " +
                 ms(stat_seconds(s, "time_lower_bound_s"));
-    line("stages", stages + " (summed over components)");
+    line("stage detail", stages + " (summed over components)");
     line("covers", stat_text(s, "double_covers_solved") + " solved, " + stat_text(s, "fallbacks") +
                        " components needed a fallback");
     if (exact)
