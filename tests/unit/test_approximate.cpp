@@ -17,6 +17,7 @@
 #include "bimdf/solve.hpp"
 #include "brute_force.hpp"
 #include "random_problem.hpp"
+#include "test_helpers.hpp"
 
 namespace bimdf {
 namespace {
@@ -91,7 +92,7 @@ SuiteReport run_suite(uint64_t seed, int count, ParityRepairMode parity, DoubleC
   opt.max_nodes = 4;
   opt.max_edges = 6;
   SuiteReport report;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < testing::scaled(count); ++i) {
     Problem p = testing::random_problem(rng, opt);
     if (i % 2) testing::plant_feasible_demands(p, rng);
     ApproximateSolver solver(p);

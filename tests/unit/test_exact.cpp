@@ -17,6 +17,7 @@
 #include "brute_force.hpp"
 #include "milp_oracle.hpp"
 #include "random_problem.hpp"
+#include "test_helpers.hpp"
 
 namespace bimdf {
 namespace {
@@ -96,7 +97,7 @@ TEST(ExactRandom, TenThousandTinyInstancesMatchBruteForce) {
   opt.max_edges = 6;
   Tally t;
   constexpr int64_t kWindow = 24;
-  for (int i = 0; i < 10000; ++i) {
+  for (int i = 0; i < testing::scaled(10000); ++i) {
     Problem p = testing::random_problem(rng, opt);
     if (i % 2) testing::plant_feasible_demands(p, rng);
     const testing::BruteForceResult truth = testing::brute_force(p, kWindow);
@@ -116,7 +117,7 @@ TEST(ExactRandom, ThreeHundredMediumInstancesMatchTheMilp) {
   opt.max_edges = 200;
   Tally t;
   int64_t edges = 0;
-  for (int i = 0; i < 300; ++i) {
+  for (int i = 0; i < testing::scaled(300); ++i) {
     Problem p = testing::random_problem(rng, opt);
     if (i % 4) testing::plant_feasible_demands(p, rng);
     edges += p.num_edges();
@@ -128,7 +129,7 @@ TEST(ExactRandom, ThreeHundredMediumInstancesMatchTheMilp) {
             "medium " + std::to_string(i), t);
   }
   report(t, "MILP (CBC)");
-  std::cout << "[ oracle   ] mean size " << edges / 300 << " edges\n";
+  std::cout << "[ oracle   ] mean size " << edges / t.instances << " edges\n";
 }
 
 TEST(Exact, ResultDoesNotDependOnTheThreadCount) {

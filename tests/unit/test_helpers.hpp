@@ -1,6 +1,8 @@
 // Small helpers shared by the test files.
 #pragma once
 
+#include <algorithm>
+#include <cstdlib>
 #include <functional>
 #include <string>
 
@@ -19,6 +21,15 @@ inline std::string input_error_of(const std::function<void()>& f) {
   }
   ADD_FAILURE() << "expected an InputError";
   return {};
+}
+
+// `count` scaled by the environment variable BIMDF_TEST_SCALE (default 1): the sanitizer run in
+// CI sets it below 1 so that the property suites keep their full checks on fewer random
+// instances under instrumentation; the plain run always uses the full counts.
+inline int scaled(int count) {
+  const char* env = std::getenv("BIMDF_TEST_SCALE");
+  const double scale = env ? std::atof(env) : 1.0;
+  return std::max(1, static_cast<int>(count * (scale > 0 ? scale : 1.0)));
 }
 
 }  // namespace bimdf::testing

@@ -8,6 +8,7 @@
 #include "bimdf/flow.hpp"
 #include "brute_force.hpp"
 #include "random_problem.hpp"
+#include "test_helpers.hpp"
 #include "reduce/chains.hpp"
 #include "reduce/components.hpp"
 #include "reduce/double_cover.hpp"
@@ -22,7 +23,7 @@ namespace {
 
 using testing::brute_force;
 
-constexpr int kInstances = 1500;
+const int kInstances = testing::scaled(1500);
 
 Problem tiny(std::mt19937_64& rng, int i) {
   testing::RandomProblemOptions opt;
