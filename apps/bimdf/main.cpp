@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bimdf/flow.hpp"
+#include "bimdf/generate.hpp"
 #include "bimdf/io.hpp"
 #include "bimdf/summary.hpp"
 #include "bimdf/version.hpp"
@@ -164,6 +165,18 @@ int run_convert(const std::string& in_path, const std::string& out_path, std::st
   return kOk;
 }
 
+int run_generate(const std::string& family, int64_t size, uint64_t seed, const std::string& out,
+                 std::string to) {
+  const Problem p = generate_problem(family, size, seed);
+  if (to.empty()) to = out.size() >= 5 && out.substr(out.size() - 5) == ".json" ? "json" : "bimdf";
+  const std::string text = to == "json" ? to_json_problem(p) : to_bimdf(p);
+  if (out.empty() || out == "-")
+    std::cout << text;
+  else
+    cli::write_output_file(out, text, {});
+  return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -194,6 +207,22 @@ int main(int argc, char** argv) {
   convert->add_flag("--libsatsuma", libsatsuma,
                     "Write only what libSatsuma can read (2147483647 as infinity, its cost kinds); fail otherwise");
 
+  std::string family, generate_out, generate_format;
+  int64_t size = 10000;
+  uint64_t seed = 1;
+  CLI::App* generate = app.add_subcommand(
+      "generate", "Write a deterministic random or QuadWild-like benchmark instance");
+  generate->add_option("FAMILY", family, "random or quadwild")
+      ->required()
+      ->check(CLI::IsMember(generator_family_names()));
+  generate->add_option("--size", size, "Approximate number of edges")
+      ->default_val(10000)
+      ->check(CLI::Range(int64_t{1}, int64_t{100000000}));
+  generate->add_option("--seed", seed, "Random seed")->default_val(1);
+  generate->add_option("-o,--output", generate_out, "Output file (default: stdout)");
+  generate->add_option("--to", generate_format, "bimdf or json (default: from the extension)")
+      ->check(CLI::IsMember({"bimdf", "json"}));
+
   SolveCommandOptions solve_options;
   CLI::App* solve = add_solve_command(app, solve_options);
 
@@ -209,6 +238,7 @@ int main(int argc, char** argv) {
     if (*check) return run_check(problem, flow, out);
     if (*convert) return run_convert(problem, convert_out, to, libsatsuma);
     if (*solve) return run_solve(solve_options);
+    if (*generate) return run_generate(family, size, seed, generate_out, generate_format);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kBadInput;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -62,6 +63,38 @@ std::optional<std::vector<int64_t>> solve_cover(const BiMcf& bimcf, DoubleCoverK
   return dc.lift(r.flow, bimcf.num_arcs());
 }
 
+// The asymmetric cover of the linearization around `guess` with artificial ±2 loops at every
+// node (cost far above any other arc), which make it feasible whenever the residual demands are
+// even. Returns g + the pieces' flow: a pseudo-flow within bounds whose remaining imbalance —
+// twice the artificial flow — is usually zero or small.
+std::vector<int64_t> penalized_cover_flow(const Problem& p, const std::vector<int64_t>& guess,
+                                          const LinearizeOptions& lin_opt) {
+  const Linearization lin = linearize(p, guess, lin_opt);
+  BiMcf mcf = lin.mcf;
+  double max_cost = 1;
+  for (double c : mcf.cost) max_cost = std::max(max_cost, std::fabs(c));
+  // More than any path of real arcs can cost per unit, so artificial flow is a last resort.
+  const double penalty = 2 * max_cost * (1 + mcf.num_arcs());
+  for (int v = 0; v < mcf.num_nodes(); ++v)
+    for (bool head : {true, false}) {
+      mcf.end_a.push_back(End{v, head});
+      mcf.end_b.push_back(End{v, head});
+      mcf.capacity.push_back(kInfinity);
+      mcf.cost.push_back(penalty);
+    }
+  const DoubleCover dc = build_double_cover(mcf, DoubleCoverKind::Asymmetric);
+  const MinCostFlowResult r = solve_min_cost_flow(dc.mcf);
+  if (r.status != MinCostFlowStatus::Optimal)
+    throw SolverError("internal error: the penalized double cover has no optimal flow");
+  std::vector<int64_t> y = dc.lift(r.flow, mcf.num_arcs());
+  y.resize(lin.mcf.num_arcs());  // drop the artificial loops
+  return lin.lift(y);
+}
+
+bool conserves(const Problem& p, const std::vector<int64_t>& x) {
+  return check_flow(p, x).conservation_violations.empty();
+}
+
 }  // namespace
 
 std::string parity_mode_name(ParityMode mode) {
@@ -119,9 +152,17 @@ ApproximateOutcome approximate(const Problem& p, const ApproximateOptions& opt) 
     out.proof = {InfeasibilityProof::Kind::Relaxation, -1, -1};
     return out;
   }
-  // Last resort, exact either way: phase 1 (phase_one.hpp) refined to its optimum.
+  // Last resort, exact either way: phase 1 (phase_one.hpp) refined to its optimum, started
+  // from the penalized cover's flow so that little artificial flow is left to remove.
   const ParityRepair repaired = repair_parity(p, guess, opt.parity);
-  const PhaseOne phase_one = build_phase_one(p, repaired.guess);
+  const std::vector<int64_t> start = penalized_cover_flow(p, repaired.guess, lin_opt);
+  if (conserves(p, start)) {
+    out.flow = start;
+    out.status = SolveStatus::Feasible;
+    out.path = "penalized cover";
+    return out;
+  }
+  const PhaseOne phase_one = build_phase_one(p, start);
   const RefineResult refined = refine(phase_one.problem, phase_one.start);
   out.time_mcf_s += clock.lap();
   if (!refined.converged) throw SolverError("phase-1 refinement stopped before converging");
