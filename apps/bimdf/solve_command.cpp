@@ -1,6 +1,8 @@
 #include "solve_command.hpp"
 
 #include <chrono>
+#include <fstream>
+#include <limits>
 #include <cstdio>
 #include <iostream>
 
@@ -26,6 +28,22 @@ std::string stat_text(const Solution& s, const std::string& key) {
 double stat_seconds(const Solution& s, const std::string& key) {
   const auto it = s.stats.find(key);
   return it == s.stats.end() ? 0 : std::get<double>(it->second);
+}
+
+// Peak resident memory of this process image in MiB (Linux VmHWM; 0 where unavailable). Unlike
+// getrusage's ru_maxrss, it does not include what the parent held before exec.
+double peak_memory_mb() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "VmHWM:") {
+      double kb = 0;
+      status >> kb;
+      return kb / 1024.0;
+    }
+    status.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  return 0;
 }
 
 std::string ms(double seconds) {
@@ -157,6 +175,7 @@ int run_solve(const SolveCommandOptions& o) {
   s.stats["time_total_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   s.stats["solver"] = std::string(o.approximate ? "approximate" : "exact");
+  s.stats["peak_memory_mb"] = peak_memory_mb();
   deliver(o.out, human_report(s, !o.approximate, o.verbose), to_json_solution(s), {o.problem});
   return s.status == SolveStatus::Infeasible ? kNoSolution : kOk;
 }

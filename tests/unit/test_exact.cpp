@@ -15,7 +15,7 @@
 #include "bimdf/io.hpp"
 #include "bimdf/solve.hpp"
 #include "brute_force.hpp"
-#include "milp_oracle.hpp"
+#include "milp_model.hpp"
 #include "random_problem.hpp"
 #include "test_helpers.hpp"
 

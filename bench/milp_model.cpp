@@ -1,4 +1,4 @@
-#include "milp_oracle.hpp"
+#include "milp_model.hpp"
 
 #include <Cbc_C_Interface.h>
 
@@ -9,7 +9,8 @@
 
 namespace bimdf::testing {
 
-MilpResult solve_milp(const Problem& p, int64_t window_lower, int64_t window_upper) {
+MilpResult solve_milp(const Problem& p, int64_t window_lower, int64_t window_upper,
+                      double time_limit_s, int64_t radius) {
   MilpResult result;
   result.window_lower = window_lower;
   result.window_upper = window_upper;
@@ -19,12 +20,14 @@ MilpResult solve_milp(const Problem& p, int64_t window_lower, int64_t window_upp
   Cbc_setAllowableGap(m, 0.0);
   Cbc_setAllowableFractionGap(m, 0.0);
   Cbc_setParameter(m, "integerTolerance", "1e-9");
+  if (time_limit_s > 0) Cbc_setMaximumSeconds(m, time_limit_s);
 
   const int edges = p.num_edges();
   std::vector<int64_t> lo(edges), hi(edges);
   for (int e = 0; e < edges; ++e) {
     lo[e] = p.lower[e] == -kInfinity ? std::min(window_lower, p.upper[e]) : p.lower[e];
     hi[e] = p.upper[e] == kInfinity ? std::max(window_upper, lo[e]) : p.upper[e];
+
     Cbc_addCol(m, "", static_cast<double>(lo[e]), static_cast<double>(hi[e]), 0.0, 1, 0, nullptr,
                nullptr);
   }
@@ -50,7 +53,8 @@ MilpResult solve_milp(const Problem& p, int64_t window_lower, int64_t window_upp
     Cbc_addRow(m, "", static_cast<int>(cols.size()), cols.data(), coefs.data(), 'E',
                static_cast<double>(p.demand[v]));
   }
-  // Epigraphs: t_e − slope·x_e ≥ c(k) − slope·k.
+  // Epigraphs: t_e − slope·x_e ≥ c(k) − slope·k, one row per slope change (pieces of equal
+  // slope are the same row).
   for (int e = 0; e < edges; ++e) {
     const int cols[2] = {edges + e, e};
     if (lo[e] == hi[e]) {
@@ -58,16 +62,39 @@ MilpResult solve_milp(const Problem& p, int64_t window_lower, int64_t window_upp
       Cbc_addRow(m, "", 1, cols, one, 'G', p.cost[e](lo[e]));
       continue;
     }
-    for (int64_t k = lo[e]; k < hi[e]; ++k) {
-      const double ck = p.cost[e](k), slope = p.cost[e](k + 1) - ck;
-      const double coefs[2] = {1.0, -slope};
-      Cbc_addRow(m, "", 2, cols, coefs, 'G', ck - slope * static_cast<double>(k));
+    auto pieces = [&](int64_t from, int64_t to, bool add) {
+      int64_t count = 0;
+      double last_slope = NAN;
+      for (int64_t k = from; k < to; ++k) {
+        const double ck = p.cost[e](k), slope = p.cost[e](k + 1) - ck;
+        if (slope == last_slope) continue;
+        last_slope = slope;
+        ++count;
+        if (!add) continue;
+        const double coefs[2] = {1.0, -slope};
+        Cbc_addRow(m, "", 2, cols, coefs, 'G', ck - slope * static_cast<double>(k));
+      }
+      return count;
+    };
+    // Curved costs over a long range would need a row per integer: limit those to the cost's
+    // minimizer ± radius when asked to.
+    if (radius > 0 && pieces(lo[e], hi[e], false) > 2 * radius + 1) {
+      const int64_t a = p.cost[e].argmin(lo[e], hi[e]);
+      lo[e] = std::max(lo[e], a - radius);
+      hi[e] = std::min(hi[e], a + radius);
+      Cbc_setColLower(m, e, static_cast<double>(lo[e]));
+      Cbc_setColUpper(m, e, static_cast<double>(hi[e]));
     }
+    pieces(lo[e], hi[e], true);
   }
   Cbc_solve(m);
   if (Cbc_isProvenInfeasible(m)) return result;
-  if (!Cbc_isProvenOptimal(m)) throw std::runtime_error("CBC did not prove optimality");
-  const double* x = Cbc_getColSolution(m);
+  if (!Cbc_isProvenOptimal(m)) {
+    if (time_limit_s <= 0) throw std::runtime_error("CBC did not prove optimality");
+    result.proven = false;
+    if (Cbc_bestSolution(m) == nullptr) return result;  // nothing found in time
+  }
+  const double* x = result.proven ? Cbc_getColSolution(m) : Cbc_bestSolution(m);
   result.feasible = true;
   result.flow.resize(edges);
   for (int e = 0; e < edges; ++e) result.flow[e] = std::llround(x[e]);
