@@ -113,3 +113,20 @@ TEST_F(CliSolve, EveryOptionCombinationGivesAVerifiedFlow) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(CliSolve, GenerateWritesDeterministicSolvableInstances) {
+  const std::string a = path("a.bimdf"), b = path("b.json");
+  ASSERT_EQ(run("generate quadwild --size 600 --seed 4 -o " + a).exit_code, 0);
+  ASSERT_EQ(run("generate quadwild --size 600 --seed 4 -o " + b).exit_code, 0);
+  // The same problem in both formats: converting one gives the other's text.
+  EXPECT_EQ(run("convert --to json " + a).out, slurp(b));
+  const CliRun solved = run("solve --json " + a);
+  ASSERT_EQ(solved.exit_code, 0) << solved.err;
+  EXPECT_EQ(json::parse(solved.out)["status"], "optimal");
+  EXPECT_EQ(run("generate grid --size 10").exit_code, 2);
+  EXPECT_EQ(run("generate random --size 0").exit_code, 2);
+}
+
+}  // namespace
