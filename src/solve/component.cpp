@@ -28,7 +28,8 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   r.nodes_solved = p.num_nodes();
   r.edges_solved = p.num_edges();
 
-  ApproximateOutcome approx = approximate(p, config.approximate);
+  ApproximateOutcome approx = approximate(simplified.unchained_problem(), config.approximate);
+  if (approx.status == SolveStatus::Feasible) approx.flow = simplified.project_unchained(approx.flow);
   r.path = approx.path;
   r.attempts = approx.attempts;
   r.time_parity_s = approx.time_parity_s;
@@ -36,8 +37,10 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   r.time_mcf_s = approx.time_mcf_s;
   if (approx.status == SolveStatus::Infeasible) {
     r.proof = approx.proof;
-    if (r.proof.kind == InfeasibilityProof::Kind::OddParity)
-      r.proof.node = simplified.component_node(r.proof.node);
+    // Node ids of the unchained problem are the component's, plus the boundary node.
+    if (r.proof.kind == InfeasibilityProof::Kind::OddParity &&
+        r.proof.node >= component.num_nodes())
+      r.proof.node = -1;
     return r;
   }
   r.approximate_objective = objective(component, simplified.lift(approx.flow));

@@ -15,16 +15,13 @@ std::vector<int64_t> SimplifiedComponent::lift(std::vector<int64_t> flow) const 
   return fixed_.lift(outer_.lift(flow));
 }
 
-int SimplifiedComponent::component_node(int v) const {
-  if (chains_) {
-    const auto& map = chains_->reduced_node;
-    for (int w = 0; w < static_cast<int>(map.size()); ++w)
-      if (map[w] == v) {
-        v = w;
-        break;
-      }
-  }
-  return v == outer_.boundary_node ? -1 : v;
+std::vector<int64_t> SimplifiedComponent::project_unchained(
+    const std::vector<int64_t>& flow) const {
+  if (!chains_) return flow;
+  std::vector<int64_t> projected(chains_->reduced.num_edges(), 0);
+  for (size_t e = 0; e < flow.size(); ++e)
+    if (chains_->reduced_edge[e] >= 0) projected[chains_->reduced_edge[e]] = flow[e];
+  return projected;
 }
 
 }  // namespace bimdf::detail

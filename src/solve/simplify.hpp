@@ -24,10 +24,14 @@ class SimplifiedComponent {
   // An edge (component id) of a chain whose bounds do not intersect, or −1. When ≥ 0 the
   // component is infeasible and problem() must not be solved.
   int empty_chain_edge() const { return empty_chain_edge_; }
+  // The problem before chain collapse (fixed and outer edges eliminated), and the projection of
+  // its flows onto problem(): every edge of a chain carries the chain's flow. The approximation
+  // runs on the unchained problem — the double cover approximates it markedly better (bull:
+  // 21% instead of 48% above the optimum) — and refinement on the smaller chained one.
+  const Problem& unchained_problem() const { return outer_.reduced; }
+  std::vector<int64_t> project_unchained(const std::vector<int64_t>& flow) const;
   // A flow of problem() → a flow of the component.
   std::vector<int64_t> lift(std::vector<int64_t> flow) const;
-  // A node of problem() → the component's node, or −1 for the outer edges' boundary node.
-  int component_node(int node) const;
 
  private:
   FixedEdgeElimination fixed_;
