@@ -157,7 +157,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100));
   app.add_option("--time-limit", time_limit, "Seconds per exact solve (then: best flow)");
   app.add_option("--milp-seconds", milp_seconds,
-                 "CBC baseline time limit per instance (0: no baseline)");
+                 "CBC baseline time limit per instance (0: no baseline)")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // scripts/bench.sh sets a default
   app.add_option("--milp-max-edges", milp_max_edges, "Largest instance given to the baseline");
   app.add_option("--milp-radius", milp_radius,
                  "Baseline flows limited to each cost's minimizer ± this (keeps the MILP small)");
