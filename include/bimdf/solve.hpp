@@ -5,7 +5,8 @@
 // none exists. Per connected component it
 //   1. moves fixed edges (lower = upper) into the demands, eliminates outer edges (§3.2.1) and
 //      collapses chains of pass-through nodes (§3.10);
-//   2. guesses each edge's flow as its cost's integer minimizer within bounds;
+//   2. guesses each edge's flow as its cost's integer minimizer within bounds, then moves the
+//      guess to the rounded optimum of the LP relaxation (which already balances the network);
 //   3. repairs the guess's parity so that the residual demand b − σ·g is even (§3.6.2);
 //   4. linearizes the costs around the guess with capacity-2 pieces up to `max_deviation` and
 //      tail pieces that keep the whole feasible region (§3.5, §3.6.3);

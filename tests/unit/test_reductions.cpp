@@ -16,6 +16,8 @@
 #include "reduce/linearize.hpp"
 #include "reduce/outer_edges.hpp"
 #include "reduce/parity.hpp"
+#include "reduce/phase_one.hpp"
+#include "solve/refine.hpp"
 #include "backend/min_cost_flow.hpp"
 
 namespace bimdf {
@@ -47,6 +49,13 @@ Problem subdivided(Problem p, std::mt19937_64& rng) {
     p.add_edge(End{w, false}, b, lo, up, testing::random_cost(rng, {}, lo, up));
   }
   return p;
+}
+
+// Each edge's cost minimizer, parity-repaired by the spanning-tree T-join.
+detail::ParityRepair tjoin_repaired_minimizers(const Problem& p) {
+  std::vector<int64_t> g(p.num_edges());
+  for (int e = 0; e < p.num_edges(); ++e) g[e] = p.cost[e].argmin(p.lower[e], p.upper[e]);
+  return detail::repair_parity(p, g, detail::ParityMode::SpanningTreeTJoin);
 }
 
 bool near(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::max(1.0, std::fabs(b)); }
@@ -160,9 +169,7 @@ TEST(Reductions, DoubleCoversLiftToFeasibleFlows) {
   int lifted = 0;
   for (int i = 0; i < kInstances; ++i) {
     const Problem p = detail::eliminate_outer_edges(tiny(rng, i)).reduced;
-    std::vector<int64_t> g(p.num_edges());
-    for (int e = 0; e < p.num_edges(); ++e) g[e] = p.cost[e].argmin(p.lower[e], p.upper[e]);
-    const auto repaired = detail::repair_parity(p, g, detail::ParityMode::SpanningTreeTJoin);
+    const auto repaired = tjoin_repaired_minimizers(p);
     if (repaired.odd_node >= 0) continue;
     const auto lin = detail::linearize(p, repaired.guess, {});
     const bool feasible = brute_force(p).feasible;
@@ -184,6 +191,27 @@ TEST(Reductions, DoubleCoversLiftToFeasibleFlows) {
     }
   }
   EXPECT_GT(lifted, kInstances);
+}
+
+// Phase 1 (the approximation's last resort) with exact refinement: the artificial flow goes to
+// zero exactly when the problem is feasible, and then the lifted flow is feasible.
+TEST(Reductions, PhaseOneRefinementDecidesFeasibility) {
+  std::mt19937_64 rng(27);
+  int feasible_count = 0;
+  for (int i = 0; i < kInstances; ++i) {
+    const Problem p = detail::eliminate_outer_edges(tiny(rng, i)).reduced;
+    const auto repaired = tjoin_repaired_minimizers(p);
+    if (repaired.odd_node >= 0) continue;
+    const detail::PhaseOne phase_one = detail::build_phase_one(p, repaired.guess);
+    const detail::RefineResult refined = detail::refine(phase_one.problem, phase_one.start);
+    ASSERT_TRUE(refined.converged);
+    const bool feasible = phase_one.artificial_flow(refined.flow) == 0;
+    ASSERT_EQ(feasible, brute_force(p).feasible) << "instance " << i;
+    if (!feasible) continue;
+    ++feasible_count;
+    ASSERT_TRUE(check_flow(p, phase_one.lift(refined.flow)).feasible()) << "instance " << i;
+  }
+  EXPECT_GT(feasible_count, kInstances / 4);
 }
 
 }  // namespace
