@@ -4,6 +4,8 @@
 //   -o FILE   write the result JSON (or, for convert, the problem) to FILE, atomically
 //   exit 0 success, 1 infeasible/unbounded (or a flow that violates the problem),
 //        2 invalid input or usage, 3 internal error.
+#include <malloc.h>
+
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <cstdio>
@@ -34,7 +36,8 @@ std::string format_name(const std::string& text) {
 
 json info_json(const std::string& path, const std::string& format, const ProblemSummary& s) {
   json kinds = json::object(), costs = json::object(), terms = json::object();
-  for (int k = 0; k < kNumEdgeKinds; ++k) kinds[edge_kind_name(static_cast<EdgeKind>(k))] = s.edge_kinds[k];
+  for (int k = 0; k < kNumEdgeKinds; ++k)
+    kinds[edge_kind_name(static_cast<EdgeKind>(k))] = s.edge_kinds[k];
   for (int k = 0; k < kNumCostKinds; ++k) {
     costs[std::string(cost_kind_name(static_cast<CostKind>(k)))] = s.cost_kinds[k];
     terms[std::string(cost_kind_name(static_cast<CostKind>(k)))] = s.cost_terms[k];
@@ -54,7 +57,8 @@ json info_json(const std::string& path, const std::string& format, const Problem
             {"positive_lower", s.positive_lower},
             {"negative_lower", s.negative_lower}}},
           {"components", s.components},
-          {"largest_component", {{"nodes", s.largest_component_nodes}, {"edges", s.largest_component_edges}}},
+          {"largest_component",
+           {{"nodes", s.largest_component_nodes}, {"edges", s.largest_component_edges}}},
           {"parity_infeasible_components", s.parity_infeasible_components}};
 }
 
@@ -66,7 +70,8 @@ std::string info_text(const std::string& path, const std::string& format, const 
   auto counts = [](const auto& array, int n, auto name_of) {
     std::string r;
     for (int k = 0; k < n; ++k)
-      if (array[k]) r += (r.empty() ? "" : ", ") + std::string(name_of(k)) + " " + std::to_string(array[k]);
+      if (array[k])
+        r += (r.empty() ? "" : ", ") + std::string(name_of(k)) + " " + std::to_string(array[k]);
     return r.empty() ? std::string("none") : r;
   };
   const std::string demand = shortest_decimal(s.total_demand);
@@ -74,14 +79,19 @@ std::string info_text(const std::string& path, const std::string& format, const 
   line("nodes", std::to_string(s.nodes) + " (" + std::to_string(s.nodes_with_demand) +
                     " with non-zero demand, total demand " + demand + ")");
   line("edges", std::to_string(s.edges));
-  line("edge kinds", counts(s.edge_kinds, kNumEdgeKinds, [](int k) { return edge_kind_name(static_cast<EdgeKind>(k)); }));
-  line("bounds", "fixed " + std::to_string(s.fixed_edges) + ", finite upper " + std::to_string(s.finite_upper) +
-                     ", lower > 0: " + std::to_string(s.positive_lower) + ", lower < 0: " + std::to_string(s.negative_lower));
+  line("edge kinds", counts(s.edge_kinds, kNumEdgeKinds,
+                            [](int k) { return edge_kind_name(static_cast<EdgeKind>(k)); }));
+  line("bounds", "fixed " + std::to_string(s.fixed_edges) + ", finite upper " +
+                     std::to_string(s.finite_upper) +
+                     ", lower > 0: " + std::to_string(s.positive_lower) +
+                     ", lower < 0: " + std::to_string(s.negative_lower));
   auto cost_name = [](int k) { return cost_kind_name(static_cast<CostKind>(k)); };
   line("costs", counts(s.cost_kinds, kNumCostKinds, cost_name));
-  if (s.cost_kinds[static_cast<int>(CostKind::Sum)]) line("cost terms", counts(s.cost_terms, kNumCostKinds, cost_name));
-  line("components", std::to_string(s.components) + " (largest: " + std::to_string(s.largest_component_nodes) +
-                         " nodes, " + std::to_string(s.largest_component_edges) + " edges)");
+  if (s.cost_kinds[static_cast<int>(CostKind::Sum)])
+    line("cost terms", counts(s.cost_terms, kNumCostKinds, cost_name));
+  line("components", std::to_string(s.components) +
+                         " (largest: " + std::to_string(s.largest_component_nodes) + " nodes, " +
+                         std::to_string(s.largest_component_edges) + " edges)");
   if (s.parity_infeasible_components)
     line("infeasible", std::to_string(s.parity_infeasible_components) +
                            " component(s) cannot meet their demands (parity of the total demand)");
@@ -92,54 +102,66 @@ int run_info(const std::string& path, const OutputOptions& out) {
   const std::string text = read_text_file(path);
   const Problem p = parse_problem(text, path);
   const ProblemSummary s = summarize(p);
-  deliver(out, info_text(path, format_name(text), s), info_json(path, format_name(text), s).dump(2) + "\n", {path});
+  deliver(out, info_text(path, format_name(text), s),
+          info_json(path, format_name(text), s).dump(2) + "\n", {path});
   return kOk;
 }
 
-int run_check(const std::string& problem_path, const std::string& flow_path, const OutputOptions& out) {
+int run_check(const std::string& problem_path, const std::string& flow_path,
+              const OutputOptions& out) {
   const Problem p = read_problem_file(problem_path);
   const std::vector<int64_t> flow = read_flow_file(flow_path);
   if (flow.size() != static_cast<size_t>(p.num_edges()))
-    throw InputError(flow_path, "", "the flow has " + std::to_string(flow.size()) + " values but the problem " +
-                                        problem_path + " has " + std::to_string(p.num_edges()) + " edges");
+    throw InputError(flow_path, "",
+                     "the flow has " + std::to_string(flow.size()) + " values but the problem " +
+                         problem_path + " has " + std::to_string(p.num_edges()) + " edges");
   const FlowCheck check = check_flow(p, flow);
   constexpr size_t kListed = 20;  // the text lists the first violations; JSON has all of them
   std::string t;
   json bounds = json::array(), conservation = json::array();
   for (const BoundViolation& v : check.bound_violations) {
-    bounds.push_back({{"edge", v.edge}, {"flow", v.flow}, {"lower", p.lower[v.edge] == -kInfinity ? json("-inf") : json(p.lower[v.edge])},
-                      {"upper", p.upper[v.edge] == kInfinity ? json("inf") : json(p.upper[v.edge])}});
+    bounds.push_back(
+        {{"edge", v.edge},
+         {"flow", v.flow},
+         {"lower", p.lower[v.edge] == -kInfinity ? json("-inf") : json(p.lower[v.edge])},
+         {"upper", p.upper[v.edge] == kInfinity ? json("inf") : json(p.upper[v.edge])}});
     if (bounds.size() <= kListed)
-      t += "edge " + std::to_string(v.edge) + ": flow " + std::to_string(v.flow) + " is outside its bounds [" +
-           bound_text(p.lower[v.edge]) + ", " + bound_text(p.upper[v.edge]) + "]\n";
+      t += "edge " + std::to_string(v.edge) + ": flow " + std::to_string(v.flow) +
+           " is outside its bounds [" + bound_text(p.lower[v.edge]) + ", " +
+           bound_text(p.upper[v.edge]) + "]\n";
   }
   for (const ConservationViolation& v : check.conservation_violations) {
     // The net flow is exact in 128 bits; it fits a double's range and is printed as such only
     // when it leaves int64.
     const bool fits = v.net_flow >= INT64_MIN && v.net_flow <= INT64_MAX;
     conservation.push_back({{"node", v.node},
-                            {"net_flow", fits ? json(static_cast<int64_t>(v.net_flow)) : json(static_cast<double>(v.net_flow))},
+                            {"net_flow", fits ? json(static_cast<int64_t>(v.net_flow))
+                                              : json(static_cast<double>(v.net_flow))},
                             {"demand", v.demand}});
     if (conservation.size() <= kListed)
-      t += "node " + std::to_string(v.node) + ": net flow " + conservation.back()["net_flow"].dump() +
-           " differs from its demand " + std::to_string(v.demand) + "\n";
+      t += "node " + std::to_string(v.node) + ": net flow " +
+           conservation.back()["net_flow"].dump() + " differs from its demand " +
+           std::to_string(v.demand) + "\n";
   }
-  if (bounds.size() > kListed || conservation.size() > kListed) t += "(more violations in the JSON result)\n";
+  if (bounds.size() > kListed || conservation.size() > kListed)
+    t += "(more violations in the JSON result)\n";
   if (check.feasible())
     t += "feasible flow, objective " + shortest_decimal(check.objective) + "\n";
   else
     t += "infeasible flow: " + std::to_string(check.bound_violations.size()) + " bound and " +
-         std::to_string(check.conservation_violations.size()) + " conservation violations, objective " +
-         shortest_decimal(check.objective) + "\n";
-  const json result = {{"feasible", check.feasible()},
-                       {"objective", std::isfinite(check.objective) ? json(check.objective) : json(nullptr)},
-                       {"bound_violations", bounds},
-                       {"conservation_violations", conservation}};
+         std::to_string(check.conservation_violations.size()) +
+         " conservation violations, objective " + shortest_decimal(check.objective) + "\n";
+  const json result = {
+      {"feasible", check.feasible()},
+      {"objective", std::isfinite(check.objective) ? json(check.objective) : json(nullptr)},
+      {"bound_violations", bounds},
+      {"conservation_violations", conservation}};
   deliver(out, t, result.dump(2) + "\n", {problem_path, flow_path});
   return check.feasible() ? kOk : kNoSolution;
 }
 
-int run_convert(const std::string& in_path, const std::string& out_path, std::string to, bool libsatsuma) {
+int run_convert(const std::string& in_path, const std::string& out_path, std::string to,
+                bool libsatsuma) {
   const Problem p = read_problem_file(in_path);
   if (to.empty()) {
     const bool json_ext = out_path.size() >= 5 && out_path.substr(out_path.size() - 5) == ".json";
@@ -180,32 +202,51 @@ int run_generate(const std::string& family, int64_t size, uint64_t seed, const s
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The solver allocates and frees the same large arrays round after round (min-cost flow and
+  // matching networks of up to a few hundred MB). By default glibc serves each from a fresh
+  // mmap and returns it on free, so every round pays the page faults again (a fifth of the
+  // approximation's time on the largest shared instance). Keeping freed memory in the heap
+  // avoids that at no cost in peak memory; a process-wide setting, so the program sets it, not
+  // the library.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's maximum
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   CLI::App app{"bimdf: exact minimum-deviation flows in bidirected graphs (Bi-MDF)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("bimdf ") + BIMDF_VERSION);
-  app.footer("Exit codes: 0 success, 1 infeasible (or a flow that violates the problem), 2 invalid input or usage, 3 internal error.\n"
-             "Problem files: libSatsuma .bimdf text or bimdf JSON, detected by content (docs/formats.md).");
+  app.footer(
+      "Exit codes: 0 success, 1 infeasible (or a flow that violates the problem), 2 invalid input "
+      "or usage, 3 internal error.\n"
+      "Problem files: libSatsuma .bimdf text or bimdf JSON, detected by content "
+      "(docs/formats.md).");
 
   OutputOptions out;
   std::string problem, flow, convert_out, to;
   bool libsatsuma = false;
 
-  CLI::App* info = app.add_subcommand("info", "Validate a problem and print its sizes, edge kinds, costs and components");
+  CLI::App* info = app.add_subcommand(
+      "info", "Validate a problem and print its sizes, edge kinds, costs and components");
   info->add_option("PROBLEM", problem, "Problem file (.bimdf or .json)")->required();
   add_output_options(info, out);
 
-  CLI::App* check = app.add_subcommand("check", "Verify a flow: bounds, conservation at every node, objective");
+  CLI::App* check =
+      app.add_subcommand("check", "Verify a flow: bounds, conservation at every node, objective");
   check->add_option("PROBLEM", problem, "Problem file (.bimdf or .json)")->required();
-  check->add_option("FLOW", flow, "Flow: a solution JSON, a JSON array, or whitespace-separated integers")->required();
+  check
+      ->add_option("FLOW", flow,
+                   "Flow: a solution JSON, a JSON array, or whitespace-separated integers")
+      ->required();
   add_output_options(check, out);
 
-  CLI::App* convert = app.add_subcommand("convert", "Convert a problem between the .bimdf and JSON formats");
+  CLI::App* convert =
+      app.add_subcommand("convert", "Convert a problem between the .bimdf and JSON formats");
   convert->add_option("PROBLEM", problem, "Problem file (.bimdf or .json)")->required();
   convert->add_option("-o,--output", convert_out, "Output file (default: stdout)");
-  convert->add_option("--to", to, "Output format (default: from the output's extension, else bimdf)")
+  convert
+      ->add_option("--to", to, "Output format (default: from the output's extension, else bimdf)")
       ->check(CLI::IsMember({"bimdf", "json"}));
   convert->add_flag("--libsatsuma", libsatsuma,
-                    "Write only what libSatsuma can read (2147483647 as infinity, its cost kinds); fail otherwise");
+                    "Write only what libSatsuma can read (2147483647 as infinity, its cost kinds); "
+                    "fail otherwise");
 
   std::string family, generate_out, generate_format;
   int64_t size = 10000;

@@ -1,10 +1,10 @@
 #include "solve_command.hpp"
 
 #include <chrono>
-#include <fstream>
-#include <limits>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <limits>
 
 #include "bimdf/io.hpp"
 #include "bimdf/solve.hpp"
@@ -18,9 +18,12 @@ std::string stat_text(const Solution& s, const std::string& key) {
   return std::visit(
       [](const auto& v) -> std::string {
         using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, std::string>) return v;
-        else if constexpr (std::is_same_v<T, double>) return shortest_decimal(v);
-        else return std::to_string(v);
+        if constexpr (std::is_same_v<T, std::string>)
+          return v;
+        else if constexpr (std::is_same_v<T, double>)
+          return shortest_decimal(v);
+        else
+          return std::to_string(v);
       },
       it->second);
 }
@@ -64,42 +67,51 @@ std::string human_report(const Solution& s, bool exact, bool verbose) {
   } else {
     line("objective", shortest_decimal(s.objective));
     if (exact) {
-      line("approximation", stat_text(s, "approximate_objective") + " (" +
-                                stat_text(s, "approximation_path") + ")");
-      if (s.stats.count("lower_bound"))
-        line("lower bound", stat_text(s, "lower_bound") + " (relative gap " +
-                                stat_text(s, "relative_gap") + ")");
+      line("approximation",
+           stat_text(s, "approximate_objective") + " (" + stat_text(s, "approximation_path") + ")");
+      // Proven optimal: the bound is the objective itself, nothing to report.
+      if (s.status != SolveStatus::Optimal && s.stats.count("lower_bound"))
+        line("lower bound",
+             stat_text(s, "lower_bound") + " (relative gap " + stat_text(s, "relative_gap") + ")");
       line("rounds", stat_text(s, "refinement_rounds") + " refinement rounds (at most " +
-                         stat_text(s, "refinement_rounds_max") + " in one component)");
+                         stat_text(s, "refinement_rounds_max") + " in one component), " +
+                         stat_text(s, "matchings_solved") + " needed a matching");
     } else {
       line("path", stat_text(s, "approximation_path"));
     }
   }
-  line("time", ms(stat_seconds(s, "time_total_s")) + " (read " + ms(stat_seconds(s, "time_read_s")) +
-                   ", solve " + ms(stat_seconds(s, "time_solve_s")) + ")");
+  line("time", ms(stat_seconds(s, "time_total_s")) + " (read " +
+                   ms(stat_seconds(s, "time_read_s")) + ", solve " +
+                   ms(stat_seconds(s, "time_solve_s")) + ")");
   if (s.status != SolveStatus::Infeasible) {
-    const double approx_s = stat_seconds(s, "time_simplify_s") + stat_seconds(s, "time_parity_s") +
+    const double approx_s = stat_seconds(s, "time_simplify_s") +
+                            stat_seconds(s, "time_lp_guess_s") + stat_seconds(s, "time_parity_s") +
                             stat_seconds(s, "time_linearize_s") +
                             stat_seconds(s, "time_min_cost_flow_s");
     std::string stages = "approximation " + ms(approx_s);
     if (exact)
       stages += ", refinement " +
-                ms(stat_seconds(s, "time_refine_build_s") + stat_seconds(s, "time_matching_s")) +
-                " (matching " + ms(stat_seconds(s, "time_matching_s")) + "), lower bound " +
-                ms(stat_seconds(s, "time_lower_bound_s"));
+                ms(stat_seconds(s, "time_refine_build_s") + stat_seconds(s, "time_pruning_s") +
+                   stat_seconds(s, "time_matching_s")) +
+                " (matching " + ms(stat_seconds(s, "time_matching_s")) + ")" +
+                (s.status == SolveStatus::Optimal
+                     ? ""
+                     : ", lower bound " + ms(stat_seconds(s, "time_lower_bound_s")));
     line("stages", stages);
   }
   if (verbose) {
     line("components", stat_text(s, "components") + " (" + stat_text(s, "threads") + " threads)");
     line("solved size", stat_text(s, "nodes_solved") + " nodes, " + stat_text(s, "edges_solved") +
                             " edges after simplification");
-    std::string stages = "simplify " + ms(stat_seconds(s, "time_simplify_s")) + ", parity " +
+    std::string stages = "simplify " + ms(stat_seconds(s, "time_simplify_s")) + ", LP guess " +
+                         ms(stat_seconds(s, "time_lp_guess_s")) + ", parity " +
                          ms(stat_seconds(s, "time_parity_s")) + ", linearize " +
                          ms(stat_seconds(s, "time_linearize_s")) + ", min-cost flow " +
                          ms(stat_seconds(s, "time_min_cost_flow_s"));
     if (exact)
       stages += ", refinement build " + ms(stat_seconds(s, "time_refine_build_s")) +
-                ", matching " + ms(stat_seconds(s, "time_matching_s")) + ", lower bound " +
+                ", pruning LP " + ms(stat_seconds(s, "time_pruning_s")) + ", matching " +
+                ms(stat_seconds(s, "time_matching_s")) + ", lower bound " +
                 ms(stat_seconds(s, "time_lower_bound_s"));
     line("stage detail", stages + " (summed over components)");
     line("covers", stat_text(s, "double_covers_solved") + " solved, " + stat_text(s, "fallbacks") +
@@ -123,7 +135,8 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
                   "U: deviation from the guess modelled exactly at even points")
       ->default_val(5)
       ->check(CLI::Range(0, 1000));
-  cmd->add_option("--parity", o.parity, "Parity repair: tjoin (spanning-tree T-join) or round-to-even")
+  cmd->add_option("--parity", o.parity,
+                  "Parity repair: tjoin (spanning-tree T-join) or round-to-even")
       ->default_val("tjoin")
       ->check(CLI::IsMember({"tjoin", "round-to-even"}));
   cmd->add_option("--cover", o.cover, "Double cover to start with: asymmetric or symmetric")
@@ -151,8 +164,8 @@ int run_solve(const SolveCommandOptions& o) {
   const double read_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const ParityRepairMode parity = o.parity == "tjoin" ? ParityRepairMode::SpanningTreeTJoin
-                                                      : ParityRepairMode::RoundToEven;
+  const ParityRepairMode parity =
+      o.parity == "tjoin" ? ParityRepairMode::SpanningTreeTJoin : ParityRepairMode::RoundToEven;
   const DoubleCoverMode cover =
       o.cover == "asymmetric" ? DoubleCoverMode::Asymmetric : DoubleCoverMode::Symmetric;
   Solution s;

@@ -22,8 +22,8 @@
 // or a hard feasible one) needs the exact solver and is reported as an error, never as
 // "infeasible".
 //
-// Both solvers work in LEMON's style: construct on a validated problem (the solver keeps a reference),
-// set options, run(), then query.
+// Both solvers work in LEMON's style: construct on a validated problem (the solver keeps a
+// reference), set options, run(), then query.
 //
 //   bimdf::ApproximateSolver solver(problem);
 //   solver.max_deviation(5);
@@ -61,10 +61,11 @@ class SolverError : public std::runtime_error {
 
 // The exact solver (paper §3.7–3.9): the approximation above, then iterative refinement — each
 // round a minimum-cost circulation of throughflow at most 2 around the current flow, found as a
-// maximum-weight perfect matching (LEMON) — until a round no longer lowers the objective,
-// which proves optimality (paper Thm 3.8). Components are solved independently, on
-// `threads` workers; the flow does not depend on the thread count. A lower bound from the LP
-// relaxation certifies the result.
+// maximum-weight perfect matching (LEMON) on the arcs that the round's LP relaxation cannot
+// exclude — until a round no longer lowers the objective, which proves optimality (paper
+// Thm 3.8). Components are solved independently, on `threads` workers; the flow does not
+// depend on the thread count. When a limit stops refinement first, a lower bound from the LP
+// relaxation of the whole problem says how far from optimal the flow can be.
 //
 //   bimdf::Solver solver(problem);
 //   solver.threads(2).time_limit(10.0);
@@ -87,15 +88,16 @@ class Solver {
   Solver& time_limit(double seconds);
   // Worker threads for independent components (≥ 1). Default 1.
   Solver& threads(int count);
-  // Compute the LP-relaxation lower bound ("lower_bound", "relative_gap"). Default true.
+  // Report a lower bound ("lower_bound", "relative_gap"): the optimum itself for components
+  // proven optimal, the LP relaxation's bound for the others. Default true.
   Solver& lower_bound(bool enable);
 
   // Returns Optimal, Feasible (a limit was hit) or Infeasible. Throws like ApproximateSolver.
   SolveStatus run();
 
   // After run(): as ApproximateSolver's, plus "approximate_objective", "refinement_rounds",
-  // "refinement_rounds_max", "time_refine_build_s", "time_matching_s", "lower_bound",
-  // "relative_gap" and matching sizes.
+  // "refinement_rounds_max", "matchings_solved", "time_refine_build_s", "time_pruning_s",
+  // "time_matching_s", "lower_bound", "relative_gap" and matching sizes.
   const Solution& solution() const { return solution_; }
 
  private:

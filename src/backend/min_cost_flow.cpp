@@ -2,10 +2,11 @@
 // compile as C++20, DESIGN §6); no LEMON type leaves this file.
 #include "backend/min_cost_flow.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <lemon/network_simplex.h>
 #include <lemon/static_graph.h>
+
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -64,7 +65,15 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf) {
   }
   result.status = MinCostFlowStatus::Optimal;
   result.flow.assign(m, 0);
-  for (int i = 0; i < m; ++i) result.flow[order[i]] = simplex.flow(g.arc(i));
+  result.scaled_cost.assign(m, 0);
+  result.reduced_cost.assign(m, 0);
+  for (int i = 0; i < m; ++i) {
+    const lemon::StaticDigraph::Arc a = g.arc(i);
+    result.flow[order[i]] = simplex.flow(a);
+    result.scaled_cost[order[i]] = cost[a];
+    result.reduced_cost[order[i]] =
+        cost[a] + simplex.potential(g.source(a)) - simplex.potential(g.target(a));
+  }
   return result;
 }
 

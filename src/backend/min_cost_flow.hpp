@@ -24,6 +24,12 @@ struct MinCostFlowResult {
   MinCostFlowStatus status = MinCostFlowStatus::Infeasible;
   std::vector<int64_t> flow;  // per arc, when Optimal
   double cost_scale = 1;      // the S used
+  // The integer problem actually solved, and its optimal dual (when Optimal), per arc:
+  // scaled_cost = llround(c·S); reduced_cost = scaled_cost + π(source) − π(target) for LEMON's
+  // node potentials π. Optimality (complementary slackness): flow 0 where reduced_cost > 0,
+  // flow = capacity where reduced_cost < 0. |reduced_cost| < 3·2^60, see the scale above.
+  std::vector<int64_t> scaled_cost;
+  std::vector<int64_t> reduced_cost;
 };
 
 // Solves `mcf` exactly (for the scaled integer costs). Deterministic.

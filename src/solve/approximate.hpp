@@ -31,10 +31,10 @@ struct ApproximateOutcome {
   SolveStatus status = SolveStatus::Infeasible;  // Feasible or Infeasible
   std::vector<int64_t> flow;                     // of the problem given, when Feasible
   InfeasibilityProof proof;                      // ids of the problem given
-  std::string path;       // e.g. "tjoin+asymmetric"
-  int attempts = 0;       // double covers tried
-  int64_t mcf_arcs = 0;   // directed arcs of the last cover solved
-  double time_parity_s = 0, time_linearize_s = 0, time_mcf_s = 0;
+  std::string path;                              // e.g. "tjoin+asymmetric"
+  int attempts = 0;                              // double covers tried
+  int64_t mcf_arcs = 0;                          // directed arcs of the last cover solved
+  double time_lp_guess_s = 0, time_parity_s = 0, time_linearize_s = 0, time_mcf_s = 0;
 };
 
 // `problem` must be simplified (no outer or fixed edges). Throws SolverError (bimdf/solve.hpp)

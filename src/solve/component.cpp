@@ -29,9 +29,11 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   r.edges_solved = p.num_edges();
 
   ApproximateOutcome approx = approximate(simplified.unchained_problem(), config.approximate);
-  if (approx.status == SolveStatus::Feasible) approx.flow = simplified.project_unchained(approx.flow);
+  if (approx.status == SolveStatus::Feasible)
+    approx.flow = simplified.project_unchained(approx.flow);
   r.path = approx.path;
   r.attempts = approx.attempts;
+  r.time_lp_guess_s = approx.time_lp_guess_s;
   r.time_parity_s = approx.time_parity_s;
   r.time_linearize_s = approx.time_linearize_s;
   r.time_mcf_s = approx.time_mcf_s;
@@ -50,6 +52,8 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
     RefineResult refined = refine(p, std::move(flow), config.refine);
     flow = std::move(refined.flow);
     r.rounds = refined.rounds;
+    r.matchings = refined.matchings;
+    r.time_pruning_s = refined.time_pruning_s;
     r.matching_nodes = refined.matching_nodes;
     r.matching_edges = refined.matching_edges;
     r.time_refine_build_s = refined.time_build_s;
@@ -57,12 +61,15 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
     if (refined.converged) r.status = SolveStatus::Optimal;
   }
   r.flow = simplified.lift(flow);
-  if (config.lower_bound) {
+  if (config.lower_bound && r.status == SolveStatus::Optimal) {
+    // Refinement proved the flow optimal: its cost is the best bound, and the LP is skipped.
+    r.lower_bound = objective(component, r.flow);
+  } else if (config.lower_bound) {
     t = std::chrono::steady_clock::now();
     // The simplified problem lacks the fixed edges and closed chain cycles, whose flow is
     // known: their cost is the difference between the two objectives.
-    r.lower_bound = relaxation_lower_bound(p, flow) + objective(component, r.flow) -
-                    objective(p, flow);
+    r.lower_bound =
+        relaxation_lower_bound(p, flow) + objective(component, r.flow) - objective(p, flow);
     r.time_lower_bound_s = seconds_since(t);
   }
   return r;

@@ -15,9 +15,9 @@ namespace bimdf::detail {
 struct ComponentConfig {
   bool collapse_chains = true;
   ApproximateOptions approximate;
-  bool exact = false;         // refine the approximation to the optimum
-  RefineOptions refine;       // round and time limits of the refinement
-  bool lower_bound = false;   // compute the relaxation's lower bound
+  bool exact = false;        // refine the approximation to the optimum
+  RefineOptions refine;      // round and time limits of the refinement
+  bool lower_bound = false;  // compute the relaxation's lower bound
 };
 
 struct ComponentResult {
@@ -27,12 +27,13 @@ struct ComponentResult {
   std::string path;                              // of the approximation
   double approximate_objective = 0;              // Σ cost of the approximation's flow
   double lower_bound = 0;
-  int64_t rounds = 0;
+  int64_t rounds = 0, matchings = 0;
   int nodes_solved = 0, edges_solved = 0;
   int attempts = 0;
   int64_t matching_nodes = 0, matching_edges = 0;
-  double time_simplify_s = 0, time_parity_s = 0, time_linearize_s = 0, time_mcf_s = 0;
-  double time_refine_build_s = 0, time_matching_s = 0, time_lower_bound_s = 0;
+  double time_simplify_s = 0, time_lp_guess_s = 0, time_parity_s = 0, time_linearize_s = 0,
+         time_mcf_s = 0;
+  double time_refine_build_s = 0, time_pruning_s = 0, time_matching_s = 0, time_lower_bound_s = 0;
 };
 
 ComponentResult solve_component(const Problem& component, const ComponentConfig& config);

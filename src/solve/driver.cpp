@@ -97,18 +97,19 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
     try {
       std::rethrow_exception(errors[k]);
     } catch (const SolverError& e) {
-      throw SolverError("component containing node " + std::to_string(node_original[k][0]) +
-                        ": " + e.what());
+      throw SolverError("component containing node " + std::to_string(node_original[k][0]) + ": " +
+                        e.what());
     }
   }
 
   // Merge, in component order so that statistics do not depend on the thread count.
   std::map<std::string, int> paths;
-  int64_t attempts = 0, nodes_solved = 0, edges_solved = 0, rounds = 0, rounds_max = 0;
+  int64_t attempts = 0, nodes_solved = 0, edges_solved = 0, rounds = 0, rounds_max = 0,
+          matchings = 0;
   int64_t matching_nodes = 0, matching_edges = 0;
   double approximate_objective = 0, lower_bound = 0;
-  double t_simplify = 0, t_parity = 0, t_linearize = 0, t_mcf = 0, t_build = 0, t_matching = 0,
-         t_bound = 0;
+  double t_simplify = 0, t_lp_guess = 0, t_parity = 0, t_linearize = 0, t_mcf = 0, t_build = 0,
+         t_pruning = 0, t_matching = 0, t_bound = 0;
   solution.status = SolveStatus::Optimal;
   std::vector<std::vector<int64_t>> flows(parts);
   for (int k = 0; k < parts; ++k) {
@@ -118,13 +119,16 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
     edges_solved += c.edges_solved;
     rounds += c.rounds;
     rounds_max = std::max(rounds_max, c.rounds);
+    matchings += c.matchings;
     matching_nodes = std::max(matching_nodes, c.matching_nodes);
     matching_edges = std::max(matching_edges, c.matching_edges);
     t_simplify += c.time_simplify_s;
+    t_lp_guess += c.time_lp_guess_s;
     t_parity += c.time_parity_s;
     t_linearize += c.time_linearize_s;
     t_mcf += c.time_mcf_s;
     t_build += c.time_refine_build_s;
+    t_pruning += c.time_pruning_s;
     t_matching += c.time_matching_s;
     t_bound += c.time_lower_bound_s;
     if (c.status == SolveStatus::Infeasible) {
@@ -148,13 +152,14 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
   stats["edges_solved"] = edges_solved;
   stats["double_covers_solved"] = attempts;
   stats["time_simplify_s"] = t_simplify;
+  stats["time_lp_guess_s"] = t_lp_guess;
   stats["time_parity_s"] = t_parity;
   stats["time_linearize_s"] = t_linearize;
   stats["time_min_cost_flow_s"] = t_mcf;
   std::string path_text;
   int64_t fallbacks = 0;
-  const std::string primary = parity_mode_name(cc.approximate.parity) + "+" +
-                              cover_kind_name(cc.approximate.cover);
+  const std::string primary =
+      parity_mode_name(cc.approximate.parity) + "+" + cover_kind_name(cc.approximate.cover);
   for (const auto& [path, count] : paths) {
     path_text += (path_text.empty() ? "" : ", ") + path + " (" + std::to_string(count) +
                  (count == 1 ? " component)" : " components)");
@@ -165,9 +170,11 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
   if (cc.exact) {
     stats["refinement_rounds"] = rounds;
     stats["refinement_rounds_max"] = rounds_max;
+    stats["matchings_solved"] = matchings;
     stats["matching_nodes_max"] = matching_nodes;
     stats["matching_edges_max"] = matching_edges;
     stats["time_refine_build_s"] = t_build;
+    stats["time_pruning_s"] = t_pruning;
     stats["time_matching_s"] = t_matching;
   }
 
@@ -185,8 +192,8 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
     stats["approximate_objective"] = approximate_objective;
     if (cc.lower_bound) {
       stats["lower_bound"] = lower_bound;
-      stats["relative_gap"] = (solution.objective - lower_bound) /
-                              std::max(std::fabs(solution.objective), 1e-9);
+      stats["relative_gap"] =
+          (solution.objective - lower_bound) / std::max(std::fabs(solution.objective), 1e-9);
       stats["time_lower_bound_s"] = t_bound;
     }
   }

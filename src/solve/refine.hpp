@@ -1,8 +1,11 @@
 // Exact iterative refinement (paper §3.7–3.9). From a feasible flow x, one round linearizes the
 // costs around x with unit pieces up to deviation 2 in each direction (the residual Bi-MCF,
-// zero demands), reduces it to a perfect b-matching with throughflow limit 2 (bmatching.hpp)
-// and then to a perfect matching (matching_gadgets.hpp), solves that with LEMON, and applies
-// the resulting circulation. A round that does not lower the true objective — recomputed in
+// zero demands) and looks for its cheapest circulation. First the residual's LP relaxation
+// (residual_pruning.hpp): optimum 0 ends the loop at once, an integral optimum is applied as
+// it is, and otherwise its duals fix at 0 every arc no improving circulation can use. Only the
+// remaining arcs go to the paper's reduction: a perfect b-matching with throughflow limit 2
+// (bmatching.hpp), then a perfect matching (matching_gadgets.hpp) solved by LEMON, whose
+// circulation is applied. A round that does not lower the true objective — recomputed in
 // double from the integer flow — ends the loop: by the paper's Theorem 3.8 no improving
 // circulation of any size then exists, so x is optimal (up to the integer scaling of costs,
 // min_cost_flow.hpp, for costs that differ by less than its resolution).
@@ -24,9 +27,10 @@ struct RefineOptions {
 struct RefineResult {
   std::vector<int64_t> flow;
   double objective = 0;
-  int64_t rounds = 0;      // matching problems solved (the last one finds no improvement)
+  int64_t rounds = 0;      // residual problems examined (the last one finds no improvement)
+  int64_t matchings = 0;   // of them, those that needed a perfect matching
   bool converged = false;  // false: stopped by max_rounds or time_limit_s
-  double time_build_s = 0, time_matching_s = 0;
+  double time_build_s = 0, time_pruning_s = 0, time_matching_s = 0;
   int64_t matching_nodes = 0, matching_edges = 0;  // of the largest round
 };
 

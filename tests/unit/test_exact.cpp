@@ -17,6 +17,8 @@
 #include "brute_force.hpp"
 #include "milp_model.hpp"
 #include "random_problem.hpp"
+#include "reduce/outer_edges.hpp"
+#include "solve/lower_bound.hpp"
 #include "test_helpers.hpp"
 
 namespace bimdf {
@@ -64,18 +66,24 @@ void compare(const Problem& p, bool oracle_feasible, double oracle_objective,
   if (lb > s.objective + 1e-9 * std::max(1.0, std::fabs(s.objective)))
     return t.fail(label, "lower bound " + std::to_string(lb) + " above the optimum", p);
   if (!oracle_feasible) {
-    if (in_window(s.flow)) t.fail(label, "feasible, but the oracle found none", p);
-    else ++t.beyond_window;
+    if (in_window(s.flow))
+      t.fail(label, "feasible, but the oracle found none", p);
+    else
+      ++t.beyond_window;
     return;
   }
   if (s.objective > oracle_objective + 1e-9 * std::max(1.0, std::fabs(oracle_objective)))
-    return t.fail(label, "objective " + std::to_string(s.objective) + " above the oracle's " +
-                             std::to_string(oracle_objective), p);
+    return t.fail(label,
+                  "objective " + std::to_string(s.objective) + " above the oracle's " +
+                      std::to_string(oracle_objective),
+                  p);
   // Lower than the oracle: our flow is verified, so the oracle missed it — outside its window,
   // or (MILP) within the solver's own tolerances. Counted and reported, not a mismatch.
   if (!close(s.objective, oracle_objective)) {
-    if (in_window(s.flow)) ++t.oracle_short;
-    else ++t.beyond_window;
+    if (in_window(s.flow))
+      ++t.oracle_short;
+    else
+      ++t.beyond_window;
   }
 }
 
@@ -85,9 +93,9 @@ void report(const Tally& t, const std::string& name) {
   EXPECT_GT(t.optimal, t.instances / 3) << name;
   EXPECT_GT(t.infeasible, t.instances / 50) << name;
   std::cout << "[ oracle   ] " << name << ": " << t.instances << " instances, " << t.optimal
-            << " optimal, " << t.infeasible << " infeasible, " << t.mismatches
-            << " mismatches, " << t.beyond_window << " better outside the oracle's window, "
-            << t.oracle_short << " better than the oracle within its tolerance\n";
+            << " optimal, " << t.infeasible << " infeasible, " << t.mismatches << " mismatches, "
+            << t.beyond_window << " better outside the oracle's window, " << t.oracle_short
+            << " better than the oracle within its tolerance\n";
 }
 
 TEST(ExactRandom, TenThousandTinyInstancesMatchBruteForce) {
@@ -101,11 +109,48 @@ TEST(ExactRandom, TenThousandTinyInstancesMatchBruteForce) {
     Problem p = testing::random_problem(rng, opt);
     if (i % 2) testing::plant_feasible_demands(p, rng);
     const testing::BruteForceResult truth = testing::brute_force(p, kWindow);
-    compare(p, truth.feasible, truth.optimum,
-            [&](const std::vector<int64_t>& f) { return within(f, -kWindow, kWindow); },
-            "tiny " + std::to_string(i), t);
+    compare(
+        p, truth.feasible, truth.optimum,
+        [&](const std::vector<int64_t>& f) { return within(f, -kWindow, kWindow); },
+        "tiny " + std::to_string(i), t);
   }
   report(t, "brute force");
+}
+
+// The certificate on its own: the solver skips it once refinement proves optimality, so the
+// random comparisons above rarely reach it. The LP bound must never exceed the brute-force
+// optimum, must be +infinity only for infeasible problems, and should often be tight (a bound
+// that were always −infinity would pass the first check).
+TEST(ExactRandom, RelaxationLowerBoundNeverExceedsTheOptimum) {
+  std::mt19937_64 rng(14);
+  testing::RandomProblemOptions opt;
+  opt.max_nodes = 4;
+  opt.max_edges = 6;
+  int feasible = 0, tight = 0, proven_infeasible = 0;
+  for (int i = 0; i < testing::scaled(3000); ++i) {
+    Problem p = testing::random_problem(rng, opt);
+    if (i % 2) testing::plant_feasible_demands(p, rng);
+    const detail::OuterEdgeElimination red = detail::eliminate_outer_edges(p);
+    std::vector<int64_t> center(red.reduced.num_edges());
+    for (int e = 0; e < red.reduced.num_edges(); ++e)
+      center[e] = red.reduced.cost[e].argmin(red.reduced.lower[e], red.reduced.upper[e]);
+    const double lb = detail::relaxation_lower_bound(red.reduced, center);
+    const testing::BruteForceResult truth = testing::brute_force(p, 24);
+    if (!truth.feasible) {
+      proven_infeasible += std::isinf(lb) && lb > 0;
+      continue;
+    }
+    ++feasible;
+    ASSERT_LE(lb, truth.optimum + 1e-9 * std::max(1.0, std::fabs(truth.optimum)))
+        << "instance " << i << "\n"
+        << to_bimdf(p);
+    tight += close(lb, truth.optimum);
+  }
+  EXPECT_GT(feasible, testing::scaled(3000) / 3);
+  EXPECT_GT(tight, feasible / 4);
+  EXPECT_GT(proven_infeasible, 0);
+  std::cout << "[ bound    ] " << feasible << " feasible, bound tight on " << tight << ", "
+            << proven_infeasible << " infeasible proven by the relaxation\n";
 }
 
 TEST(ExactRandom, ThreeHundredMediumInstancesMatchTheMilp) {
@@ -122,11 +167,12 @@ TEST(ExactRandom, ThreeHundredMediumInstancesMatchTheMilp) {
     if (i % 4) testing::plant_feasible_demands(p, rng);
     edges += p.num_edges();
     const testing::MilpResult milp = testing::solve_milp(p);
-    compare(p, milp.feasible, milp.objective,
-            [&](const std::vector<int64_t>& f) {
-              return within(f, milp.window_lower, milp.window_upper);
-            },
-            "medium " + std::to_string(i), t);
+    compare(
+        p, milp.feasible, milp.objective,
+        [&](const std::vector<int64_t>& f) {
+          return within(f, milp.window_lower, milp.window_upper);
+        },
+        "medium " + std::to_string(i), t);
   }
   report(t, "MILP (CBC)");
   std::cout << "[ oracle   ] mean size " << edges / t.instances << " edges\n";
@@ -155,14 +201,18 @@ TEST(Exact, ResultDoesNotDependOnTheThreadCount) {
 }
 
 TEST(Exact, LimitsReturnTheBestFlowAsFeasible) {
-  const Problem p = read_problem_file(std::string(BIMDF_EXAMPLES_DIR) +
-                                      "/npm_bunny__flow_noalign_lemon_0.bimdf");
+  const Problem p =
+      read_problem_file(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny__flow_noalign_lemon_0.bimdf");
   Solver solver(p);
   solver.max_rounds(1);
   EXPECT_EQ(solver.run(), SolveStatus::Feasible);
   EXPECT_TRUE(check_flow(p, solver.solution().flow).feasible());
   EXPECT_LE(solver.solution().objective,
             std::get<double>(solver.solution().stats.at("approximate_objective")));
+  // Not proven optimal, so the certificate is the LP bound: below the objective, and close.
+  const double lb = std::get<double>(solver.solution().stats.at("lower_bound"));
+  EXPECT_LE(lb, solver.solution().objective);
+  EXPECT_GT(lb, 0.99 * solver.solution().objective);
 }
 
 TEST(ExactShared, EveryInstanceReachesItsRecordedOptimum) {

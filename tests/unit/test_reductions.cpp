@@ -4,11 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
+#include "backend/min_cost_flow.hpp"
 #include "bimdf/flow.hpp"
 #include "brute_force.hpp"
 #include "random_problem.hpp"
-#include "test_helpers.hpp"
 #include "reduce/chains.hpp"
 #include "reduce/components.hpp"
 #include "reduce/double_cover.hpp"
@@ -17,8 +18,9 @@
 #include "reduce/outer_edges.hpp"
 #include "reduce/parity.hpp"
 #include "reduce/phase_one.hpp"
+#include "reduce/residual_pruning.hpp"
 #include "solve/refine.hpp"
-#include "backend/min_cost_flow.hpp"
+#include "test_helpers.hpp"
 
 namespace bimdf {
 namespace {
@@ -82,7 +84,8 @@ TEST(Reductions, FixedEdgesLiftExactly) {
     const auto red = detail::eliminate_fixed_edges(p);
     for (int e = 0; e < red.reduced.num_edges(); ++e)
       ASSERT_LT(red.reduced.lower[e], red.reduced.upper[e]);
-    expect_equivalent(p, red.reduced, [&](const auto& f) { return red.lift(f); }, i);
+    expect_equivalent(
+        p, red.reduced, [&](const auto& f) { return red.lift(f); }, i);
   }
 }
 
@@ -94,7 +97,8 @@ TEST(Reductions, OuterEdgesLiftExactly) {
     const auto red = detail::eliminate_outer_edges(p);
     for (int e = 0; e < red.reduced.num_edges(); ++e) ASSERT_FALSE(red.reduced.is_outer(e));
     with_outer += red.boundary_node >= 0;
-    expect_equivalent(p, red.reduced, [&](const auto& f) { return red.lift(f); }, i);
+    expect_equivalent(
+        p, red.reduced, [&](const auto& f) { return red.lift(f); }, i);
   }
   EXPECT_GT(with_outer, kInstances / 4);
 }
@@ -110,7 +114,8 @@ TEST(Reductions, ChainsLiftExactly) {
       EXPECT_FALSE(brute_force(p).feasible) << "instance " << i;
       continue;
     }
-    expect_equivalent(p, red.reduced, [&](const auto& f) { return red.lift(f); }, i);
+    expect_equivalent(
+        p, red.reduced, [&](const auto& f) { return red.lift(f); }, i);
   }
   EXPECT_GT(collapsed, kInstances / 2);
 }
@@ -162,6 +167,22 @@ TEST(Reductions, ParityRepairEvensResidualsOrProvesInfeasibility) {
   }
 }
 
+// The backend's duals certify its flow: complementary slackness on every arc, and the scaled
+// costs are the llround(c·S) it promises.
+void expect_optimal_duals(const detail::DirectedMcf& mcf, const detail::MinCostFlowResult& r,
+                          int instance) {
+  for (int a = 0; a < mcf.num_arcs(); ++a) {
+    ASSERT_EQ(r.scaled_cost[a], std::llround(mcf.cost[a] * r.cost_scale))
+        << "instance " << instance;
+    if (r.reduced_cost[a] > 0) {
+      ASSERT_EQ(r.flow[a], 0) << "instance " << instance << " arc " << a;
+    }
+    if (r.reduced_cost[a] < 0) {
+      ASSERT_EQ(r.flow[a], mcf.capacity[a]) << "instance " << instance << " arc " << a;
+    }
+  }
+}
+
 // Linearization + any double cover: whenever the cover's min-cost flow exists, it lifts to a
 // feasible flow of the problem; the relaxation is feasible whenever the problem is.
 TEST(Reductions, DoubleCoversLiftToFeasibleFlows) {
@@ -173,11 +194,12 @@ TEST(Reductions, DoubleCoversLiftToFeasibleFlows) {
     if (repaired.odd_node >= 0) continue;
     const auto lin = detail::linearize(p, repaired.guess, {});
     const bool feasible = brute_force(p).feasible;
-    for (auto kind : {detail::DoubleCoverKind::Asymmetric,
-                      detail::DoubleCoverKind::AsymmetricSwapped,
-                      detail::DoubleCoverKind::Symmetric, detail::DoubleCoverKind::Relaxation}) {
+    for (auto kind :
+         {detail::DoubleCoverKind::Asymmetric, detail::DoubleCoverKind::AsymmetricSwapped,
+          detail::DoubleCoverKind::Symmetric, detail::DoubleCoverKind::Relaxation}) {
       const auto dc = detail::build_double_cover(lin.mcf, kind);
       const auto r = detail::solve_min_cost_flow(dc.mcf);
+      if (r.status == detail::MinCostFlowStatus::Optimal) expect_optimal_duals(dc.mcf, r, i);
       if (kind == detail::DoubleCoverKind::Relaxation) {
         if (feasible) {
           EXPECT_EQ(r.status, detail::MinCostFlowStatus::Optimal) << "instance " << i;
@@ -191,6 +213,70 @@ TEST(Reductions, DoubleCoversLiftToFeasibleFlows) {
     }
   }
   EXPECT_GT(lifted, kInstances);
+}
+
+// Reduced-cost fixing of a refinement round, against brute force on the box x ± 2 (the integer
+// circulations of the residual are exactly the flows in that box): a proof of optimality means
+// no better flow in the box, an integral LP optimum is the box optimum, and an improving
+// circulation — the box optimum, written with each edge's cheapest pieces first — never needs
+// a fixed arc.
+TEST(Reductions, ResidualPruningKeepsEveryImprovingCirculation) {
+  std::mt19937_64 rng(28);
+  int proofs = 0, integral = 0, improving = 0, fixed = 0;
+  for (int i = 0; i < kInstances; ++i) {
+    const Problem p = detail::eliminate_outer_edges(tiny(rng, i)).reduced;
+    // A feasible, usually non-optimal flow: the optimum for other costs.
+    Problem other = p;
+    for (int e = 0; e < p.num_edges(); ++e)
+      other.cost[e] = testing::random_cost(rng, {}, p.lower[e], p.upper[e]);
+    const auto start = brute_force(other);
+    if (!start.feasible) continue;
+    const std::vector<int64_t>& x = start.flow;
+    detail::LinearizeOptions unit;
+    unit.max_deviation = 2;
+    unit.step = 1;
+    unit.tails = false;
+    const detail::Linearization lin = detail::linearize(p, x, unit);
+    const detail::ResidualPruning pruned = detail::prune_residual(lin.mcf);
+    fixed += static_cast<int>(pruned.fixed_arcs);
+
+    Problem box = p;
+    for (int e = 0; e < p.num_edges(); ++e) {
+      box.lower[e] = std::max(p.lower[e], x[e] - 2);
+      box.upper[e] = std::min(p.upper[e], x[e] + 2);
+    }
+    const auto best = brute_force(box);
+    ASSERT_TRUE(best.feasible) << "instance " << i;
+    const double cost_x = objective(p, x);
+    const bool improves = best.optimum < cost_x - 1e-9 * std::max(1.0, std::fabs(cost_x));
+    if (pruned.proves_optimal) {
+      ++proofs;
+      ASSERT_FALSE(improves) << "instance " << i;
+    }
+    if (!pruned.integral_circulation.empty()) {
+      ++integral;
+      EXPECT_TRUE(near(objective(p, lin.lift(pruned.integral_circulation)), best.optimum))
+          << "instance " << i;
+    }
+    if (!improves) continue;
+    ++improving;
+    std::vector<char> free_arc(lin.mcf.num_arcs(), 0);
+    for (int a : pruned.arc_of) free_arc[a] = 1;
+    std::vector<int64_t> left(p.num_edges());
+    for (int e = 0; e < p.num_edges(); ++e) left[e] = best.flow[e] - x[e];
+    for (int a = 0; a < lin.mcf.num_arcs(); ++a) {  // pieces of an edge come cheapest first
+      const int e = lin.arc_edge[a];
+      if (left[e] * lin.arc_direction[a] <= 0) continue;
+      const int64_t use = std::min<int64_t>(std::abs(left[e]), lin.mcf.capacity[a]);
+      left[e] -= lin.arc_direction[a] * use;
+      ASSERT_TRUE(free_arc[a]) << "instance " << i << ": arc " << a << " of edge " << e;
+    }
+  }
+  EXPECT_GT(proofs, kInstances / 20);
+  EXPECT_GT(improving, kInstances / 20);
+  EXPECT_GT(fixed, 0);
+  std::cout << "[ suite    ] residual pruning: " << proofs << " proofs, " << integral
+            << " integral optima, " << improving << " improving, " << fixed << " arcs fixed\n";
 }
 
 // Phase 1 (the approximation's last resort) with exact refinement: the artificial flow goes to

@@ -1,0 +1,47 @@
+// Reduced-cost fixing for one exact refinement round (paper §3.7–3.9, made cheaper). The round
+// looks for the cheapest circulation of the residual Bi-MCF (unit pieces around the current
+// flow, zero demands); the paper solves a perfect matching over the whole residual for it. Its
+// LP relaxation — the relaxation double cover (double_cover.hpp), a directed min-cost flow —
+// bounds every integer circulation from below, and the LP's duals bound each arc separately:
+// with optimal value z ≤ 0 (the zero circulation is feasible) and reduced costs r ≥ 0 on the
+// directed copies the LP leaves empty, any integer circulation y with y_a ≥ 1 maps to a
+// directed flow of cost 2·cost(y) ≥ z + Σ_copies r·(copy flow), copy flow = y_a (2·y_a for a
+// ±2 loop, whose single copy carries twice its flow). When that bound is ≥ 0, no improving
+// circulation uses arc a and it is fixed at 0. On refinement rounds close to the optimum z is
+// tiny, so nearly every arc is fixed and the matching shrinks to the few nodes the remaining
+// arcs touch. Two shortcuts come with the same LP: z = 0 proves that no improving circulation
+// exists (Theorem 3.8's test without any matching), and an integral LP optimum is itself an
+// optimal integer circulation.
+//
+// All of this is exact for the scaled integer costs (backend/min_cost_flow.hpp). So that no
+// arc is fixed on the strength of rounding, the test carries a margin of one scaled unit per
+// unit of residual capacity, an upper bound on the rounding error of any circulation.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "reduce/bimcf.hpp"
+
+namespace bimdf::detail {
+
+struct ResidualPruning {
+  // The LP optimum is 0: no circulation, integer or not, lowers the cost.
+  bool proves_optimal = false;
+  // The LP optimum when it is integral and negative (per residual arc), else empty.
+  std::vector<int64_t> integral_circulation;
+  // The arcs not fixed at 0, as a Bi-MCF (zero demands) on the nodes they touch.
+  BiMcf reduced;
+  std::vector<int> arc_of;  // reduced arc → residual arc
+  int64_t fixed_arcs = 0;
+
+  // A circulation of `reduced` as one of the residual (fixed arcs 0).
+  std::vector<int64_t> lift(std::span<const int64_t> reduced_flow, int num_residual_arcs) const;
+};
+
+// `residual` must have zero demands and finite capacities. Throws std::logic_error if its LP
+// relaxation is not optimal (the zero circulation is feasible and capacities are finite).
+ResidualPruning prune_residual(const BiMcf& residual);
+
+}  // namespace bimdf::detail
