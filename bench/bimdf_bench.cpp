@@ -73,7 +73,32 @@ struct Instance {
   std::string name, path, group;  // group: "shared" or "scaling"
   int nodes = 0, edges = 0;
   double reference = NAN;  // a known optimum
+  // The reference implementation's times from the instances' README table (NAN if absent).
+  double libsatsuma_approx_ms = NAN, libsatsuma_exact_ms = NAN;
 };
+
+// The README of the shared instances has a table "| file | nodes | edges | optimum | approx
+// cost | approx ms | exact ms |"; returns file → (approx ms, exact ms).
+std::map<std::string, std::pair<double, double>> read_libsatsuma_times(const fs::path& readme) {
+  std::map<std::string, std::pair<double, double>> times;
+  std::ifstream in(readme);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, '|');) {
+      cell.erase(0, cell.find_first_not_of(' '));
+      cell.erase(cell.find_last_not_of(' ') + 1);
+      cells.push_back(cell);
+    }
+    // A leading empty cell comes from the row's first '|'.
+    if (cells.size() < 8 || cells[1].size() < 7 || !cells[1].ends_with(".bimdf")) continue;
+    try {
+      times[cells[1]] = {std::stod(cells[6]), std::stod(cells[7])};
+    } catch (const std::exception&) {
+    }
+  }
+  return times;
+}
 
 struct Row {
   Instance instance;
@@ -90,7 +115,8 @@ Row measure(const std::string& cli, const Instance& in, bool exact, int repeats,
   row.mode = exact ? "exact" : "approx";
   std::vector<std::string> args{"solve", "--json"};
   if (!exact) args.push_back("--approx");
-  if (exact && time_limit > 0) args.insert(args.end(), {"--time-limit", std::to_string(time_limit)});
+  if (exact && time_limit > 0)
+    args.insert(args.end(), {"--time-limit", std::to_string(time_limit)});
   args.push_back(in.path);
   std::vector<double> solve, read;
   std::vector<Run> runs;
@@ -182,10 +208,13 @@ int main(int argc, char** argv) {
       double opt;
       if (row >> file >> n >> m >> opt) optimum[file] = opt;
     }
+    const auto libsatsuma = read_libsatsuma_times(fs::path(instances_dir) / "README.md");
     for (const auto& e : fs::directory_iterator(instances_dir))
       if (e.path().extension() == ".bimdf") {
         Instance in{e.path().filename().string(), e.path().string(), "shared"};
         if (optimum.count(in.name)) in.reference = optimum[in.name];
+        if (auto it = libsatsuma.find(in.name); it != libsatsuma.end())
+          std::tie(in.libsatsuma_approx_ms, in.libsatsuma_exact_ms) = it->second;
         instances.push_back(in);
       }
   }
@@ -193,7 +222,8 @@ int main(int argc, char** argv) {
   fs::create_directories(scratch);
   for (int64_t size : scaling) {
     const std::string name = family + "-" + std::to_string(size) + ".bimdf";
-    std::ofstream((scratch / name).string()) << bimdf::to_bimdf(bimdf::generate_problem(family, size, 1));
+    std::ofstream((scratch / name).string())
+        << bimdf::to_bimdf(bimdf::generate_problem(family, size, 1));
     instances.push_back({name, (scratch / name).string(), "scaling"});
   }
   for (Instance& in : instances) {
@@ -221,7 +251,9 @@ int main(int argc, char** argv) {
           bimdf::read_problem_file(in.path), -100000, 100000, milp_seconds, milp_radius);
       milp_time[in.name] =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-      milp[in.name] = {!m.feasible ? (m.proven ? "infeasible" : "none") : m.proven ? "optimal" : "time limit",
+      milp[in.name] = {!m.feasible ? (m.proven ? "infeasible" : "none")
+                       : m.proven  ? "optimal"
+                                   : "time limit",
                        m.feasible ? m.objective : NAN};
       std::cerr << "milp " << in.name << ": " << milp[in.name].first << "\n";
     }
@@ -231,20 +263,22 @@ int main(int argc, char** argv) {
   if (!csv_path.empty()) {
     std::ofstream csv(csv_path);
     csv << "instance,group,nodes,edges,components,mode,status,objective,reference,runs,"
-           "read_s,solve_s,simplify_s,approximation_s,refine_build_s,matching_s,lower_bound_s,"
-           "rounds,peak_rss_mb,milp_status,milp_objective,milp_s\n";
+           "read_s,solve_s,simplify_s,lp_guess_s,approximation_s,refine_build_s,pruning_s,"
+           "matching_s,lower_bound_s,rounds,matchings,peak_rss_mb,milp_status,milp_objective,"
+           "milp_s\n";
     for (const Row& r : rows) {
       const json& s = r.stats;
-      const double approx_s = stat(s, "time_parity_s") + stat(s, "time_linearize_s") +
-                              stat(s, "time_min_cost_flow_s");
+      const double approx_s =
+          stat(s, "time_parity_s") + stat(s, "time_linearize_s") + stat(s, "time_min_cost_flow_s");
       const bool has_milp = milp.count(r.instance.name) && r.mode == "exact";
       csv << r.instance.name << "," << r.instance.group << "," << r.instance.nodes << ","
-          << r.instance.edges << "," << s.value("components", 0) << "," << r.mode << ","
-          << r.status << "," << fmt(r.objective, 12) << "," << fmt(r.instance.reference, 9) << ","
-          << r.runs << "," << r.read_s << "," << r.solve_s << "," << stat(s, "time_simplify_s")
-          << "," << approx_s << "," << stat(s, "time_refine_build_s") << ","
-          << stat(s, "time_matching_s") << "," << stat(s, "time_lower_bound_s") << ","
-          << s.value("refinement_rounds", 0) << "," << r.peak_mb << ","
+          << r.instance.edges << "," << s.value("components", 0) << "," << r.mode << "," << r.status
+          << "," << fmt(r.objective, 12) << "," << fmt(r.instance.reference, 9) << "," << r.runs
+          << "," << r.read_s << "," << r.solve_s << "," << stat(s, "time_simplify_s") << ","
+          << stat(s, "time_lp_guess_s") << "," << approx_s << "," << stat(s, "time_refine_build_s")
+          << "," << stat(s, "time_pruning_s") << "," << stat(s, "time_matching_s") << ","
+          << stat(s, "time_lower_bound_s") << "," << s.value("refinement_rounds", 0) << ","
+          << s.value("matchings_solved", 0) << "," << r.peak_mb << ","
           << (has_milp ? milp[r.instance.name].first : "") << ","
           << (has_milp ? fmt(milp[r.instance.name].second, 9) : "") << ","
           << (has_milp ? fmt(milp_time[r.instance.name]) : "") << "\n";
@@ -258,13 +292,28 @@ int main(int argc, char** argv) {
               " rev-parse --short HEAD 2>/dev/null || echo unknown")
      << "`. Machine: " << shell("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'")
      << ", " << shell("nproc") << " cores, "
-     << shell("awk '/MemTotal/ {printf \"%.0f GiB\", $2/1048576}' /proc/meminfo")
-     << "; compiler " << __VERSION__ << ". Times: median of " << repeats
+     << shell("awk '/MemTotal/ {printf \"%.0f GiB\", $2/1048576}' /proc/meminfo") << "; compiler "
+     << __VERSION__ << ". Times: median of " << repeats
      << " runs (3 for runs over 1 s), solve only (parsing separate); memory: peak resident set "
         "of the process.\n\n";
-  md << "| instance | nodes | edges | approx ms | approx gap | exact ms | rounds | refine build ms "
-        "| matching ms | peak MiB | status | objective | reference |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "| instance | nodes | edges | approx ms | approx gap | exact ms | rounds | matchings "
+        "| LP guess ms | pruning ms | matching ms | peak MiB | status | objective | reference | "
+        "libSatsuma exact ms |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  double libsatsuma_exact = 0, libsatsuma_approx = 0;
+  int above_1000 = 0, within_fifth = 0;
+  // Stages of the exact solves summed over the shared instances: the profile of the document.
+  const std::vector<std::pair<std::string, std::string>> stages{
+      {"simplify", "time_simplify_s"},
+      {"LP guess", "time_lp_guess_s"},
+      {"parity", "time_parity_s"},
+      {"linearize", "time_linearize_s"},
+      {"cover min-cost flow", "time_min_cost_flow_s"},
+      {"refinement build", "time_refine_build_s"},
+      {"pruning LP", "time_pruning_s"},
+      {"matching", "time_matching_s"},
+      {"lower bound", "time_lower_bound_s"}};
+  std::vector<double> stage_total(stages.size(), 0.0);
   double total_exact = 0, total_approx = 0;
   std::vector<double> gaps;
   std::vector<std::pair<double, double>> scaling_points;
@@ -275,21 +324,42 @@ int main(int argc, char** argv) {
       total_exact += e.solve_s;
       total_approx += a.solve_s;
       gaps.push_back(gap);
+      for (size_t k = 0; k < stages.size(); ++k)
+        stage_total[k] += stat(e.stats, stages[k].second.c_str());
+      libsatsuma_exact += e.instance.libsatsuma_exact_ms / 1e3;
+      libsatsuma_approx += e.instance.libsatsuma_approx_ms / 1e3;
+      if (e.instance.edges > 1000 && !std::isnan(e.instance.libsatsuma_exact_ms)) {
+        ++above_1000;
+        within_fifth += e.solve_s * 1e3 <= e.instance.libsatsuma_exact_ms / 5;
+      }
     } else {
       scaling_points.push_back({std::log(e.instance.edges), std::log(e.solve_s)});
     }
-    md << "| " << e.instance.name << " | " << e.instance.nodes << " | " << e.instance.edges
-       << " | " << fmt(a.solve_s * 1e3) << " | " << fmt(100 * gap, 1) << "% | "
-       << fmt(e.solve_s * 1e3) << " | " << e.stats.value("refinement_rounds", 0) << " | "
-       << fmt(stat(e.stats, "time_refine_build_s") * 1e3) << " | "
+    md << "| " << e.instance.name << " | " << e.instance.nodes << " | " << e.instance.edges << " | "
+       << fmt(a.solve_s * 1e3) << " | " << fmt(100 * gap, 1) << "% | " << fmt(e.solve_s * 1e3)
+       << " | " << e.stats.value("refinement_rounds", 0) << " | "
+       << e.stats.value("matchings_solved", 0) << " | "
+       << fmt(stat(e.stats, "time_lp_guess_s") * 1e3) << " | "
+       << fmt(stat(e.stats, "time_pruning_s") * 1e3) << " | "
        << fmt(stat(e.stats, "time_matching_s") * 1e3) << " | " << fmt(e.peak_mb, 0) << " | "
-       << e.status << " | " << fmt(e.objective, 9) << " | " << fmt(e.instance.reference, 9)
-       << " |\n";
+       << e.status << " | " << fmt(e.objective, 9) << " | " << fmt(e.instance.reference, 9) << " | "
+       << fmt(e.instance.libsatsuma_exact_ms) << " |\n";
   }
-  if (!gaps.empty())
+  if (!gaps.empty()) {
+    std::sort(gaps.begin(), gaps.end());
     md << "\nShared instances: exact total " << fmt(total_exact, 3) << " s, approximation total "
-       << fmt(total_approx, 3) << " s, median approximation gap " << fmt(100 * median(gaps), 1)
-       << "%.\n";
+       << fmt(total_approx, 3) << " s, approximation gap median " << fmt(100 * median(gaps), 1)
+       << "%, 95th percentile " << fmt(100 * gaps[(gaps.size() * 95) / 100], 1) << "%, max "
+       << fmt(100 * gaps.back(), 1) << "%. libSatsuma (README of the instances): exact total "
+       << fmt(libsatsuma_exact, 3) << " s, approximation total " << fmt(libsatsuma_approx, 3)
+       << " s. Instances above 1,000 edges solved exactly within a fifth of libSatsuma's time: "
+       << within_fifth << " of " << above_1000 << ".\n";
+    md << "Exact solves by stage, summed over the shared instances (one run each, the median "
+          "run):";
+    for (size_t k = 0; k < stages.size(); ++k)
+      md << (k ? ", " : " ") << stages[k].first << " " << fmt(stage_total[k], 3) << " s";
+    md << ".\n";
+  }
   if (scaling_points.size() >= 2) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     const double n = static_cast<double>(scaling_points.size());
@@ -301,7 +371,8 @@ int main(int argc, char** argv) {
     md << "\nMILP baseline (CBC, " << milp_seconds << " s limit; costs exact at integers; "
        << "flows on curved costs limited to the cost's minimizer ± " << milp_radius
        << ", so CBC solves a restriction and its optimum can only be higher):\n\n"
-       << "| instance | CBC status | CBC objective | CBC s | bimdf exact ms |\n|---|---|---|---|---|\n";
+       << "| instance | CBC status | CBC objective | CBC s | bimdf exact ms "
+          "|\n|---|---|---|---|---|\n";
     for (size_t i = 1; i < rows.size(); i += 2)
       if (milp.count(rows[i].instance.name))
         md << "| " << rows[i].instance.name << " | " << milp[rows[i].instance.name].first << " | "
