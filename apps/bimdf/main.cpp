@@ -18,6 +18,7 @@
 #include "bimdf/summary.hpp"
 #include "bimdf/version.hpp"
 #include "output.hpp"
+#include "quantize_command.hpp"
 #include "solve_command.hpp"
 
 namespace {
@@ -266,6 +267,8 @@ int main(int argc, char** argv) {
 
   SolveCommandOptions solve_options;
   CLI::App* solve = add_solve_command(app, solve_options);
+  QuantizeCommandOptions quantize_options;
+  CLI::App* quantize = add_quantize_command(app, quantize_options);
 
   try {
     app.parse(argc, argv);
@@ -279,6 +282,7 @@ int main(int argc, char** argv) {
     if (*check) return run_check(problem, flow, out);
     if (*convert) return run_convert(problem, convert_out, to, libsatsuma);
     if (*solve) return run_solve(solve_options);
+    if (*quantize) return run_quantize(quantize_options);
     if (*generate) return run_generate(family, size, seed, generate_out, generate_format);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
