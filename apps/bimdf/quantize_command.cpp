@@ -129,6 +129,7 @@ int run_quantize(QuantizeCommandOptions o) {
   j["status"] = std::string(status_name(last.solution.status));
   j["objective"] = last.solution.objective;
   j["edge_length"] = q.edge_length;
+  j["estimated_quads"] = std::llround(last.estimated_quads);
   j["charts"] = charts;
   j["subsides"] = layout.subsides.size();
   j["warnings"] = layout.warnings;
@@ -140,6 +141,7 @@ int run_quantize(QuantizeCommandOptions o) {
                       {"nodes", r.model.problem.num_nodes()},
                       {"edges", r.model.problem.num_edges()},
                       {"pairs", r.pairs.size()},
+                      {"estimated_quads", std::llround(r.estimated_quads)},
                       {"energies", energies_json(r.energies)},
                       {"time_model_s", r.time_model_s},
                       {"time_solve_s", r.time_solve_s},
@@ -196,7 +198,8 @@ int run_quantize(QuantizeCommandOptions o) {
     << (q.rounds.size() > 1 ? " (round 2 of 2)" : "") << "\n";
   t << "energies      isometry " << number(e.isometry) << ", regularity " << number(e.regularity)
     << ", alignment " << number(e.alignment) << "\n";
-  t << "charts        " << e.regular_charts << " of " << e.charts << " regular\n";
+  t << "charts        " << e.regular_charts << " of " << e.charts << " regular; about "
+    << std::llround(last.estimated_quads) << " quads\n";
   if (o.quantize.align)
     t << "alignment     " << e.aligned_pairs << " of " << e.pairs << " pairs aligned"
       << (q.rounds.size() > 1 ? " (round 1 found " + std::to_string(q.rounds[0].pairs.size()) + ")"

@@ -54,6 +54,7 @@ FlowModel build_flow_model(const Layout& layout, const std::vector<double>& targ
 
   // Side nodes: node[c][j] = {start half, end half}; both the same node for an unpaired side.
   std::vector<std::vector<std::array<int, 2>>> node(C);
+  model.chart_strips.assign(C, {});
   auto tail = [](int v) { return End{v, false}; };
   auto head = [](int v) { return End{v, true}; };
   for (int c = 0; c < C; ++c) {
@@ -99,10 +100,13 @@ FlowModel build_flow_model(const Layout& layout, const std::vector<double>& targ
       std::vector<std::array<int, 2>> strips{{node[c][j][1], node[c][o][0]}};
       if (k == 4 && (is_paired[c][j] || is_paired[c][o]))
         strips.push_back({node[c][j][0], node[c][o][1]});
+      model.chart_strips[c].emplace_back();
       for (auto [a, b] : strips) {
-        p.add_edge(tail(a), tail(b), k == 4 ? 0 : 1, kInfinity, Cost::zero(guess));
+        model.chart_strips[c].back().strips.push_back(
+            p.add_edge(tail(a), tail(b), k == 4 ? 0 : 1, kInfinity, Cost::zero(guess)));
         if (k != 4)
-          p.add_edge(head(a), head(b), 0, 1, Cost::abs_deviation(0, gw.boundary_singularity));
+          model.chart_strips[c].back().cancels.push_back(
+              p.add_edge(head(a), head(b), 0, 1, Cost::abs_deviation(0, gw.boundary_singularity)));
       }
     }
   }
@@ -194,6 +198,41 @@ std::vector<int64_t> read_subside_lengths(const FlowModel& model,
   for (size_t s = 0; s < lengths.size(); ++s)
     for (int e : model.subside_edges[s]) lengths[s] += flow[e];
   return lengths;
+}
+
+std::vector<double> estimate_quads(const Layout& layout, const FlowModel& model,
+                                   const std::vector<int64_t>& flow,
+                                   const std::vector<int64_t>& lengths) {
+  std::vector<double> quads(layout.charts.size(), 0);
+  for (size_t c = 0; c < layout.charts.size(); ++c) {
+    const Chart& chart = layout.charts[c];
+    if (chart.empty()) continue;
+    std::vector<double> n;  // net strips per strip family
+    double strip_total = 0;
+    for (const StripEdges& family : model.chart_strips[c]) {
+      int64_t net = 0;
+      for (int e : family.strips) net += flow[e];
+      for (int e : family.cancels) net -= flow[e];
+      n.push_back(static_cast<double>(std::max<int64_t>(net, 0)));
+      strip_total += n.back();
+    }
+    double regular = 0;
+    if (chart.valence() == 4) {
+      regular = n[0] * n[1];
+    } else {
+      // The corner between sides j and j+1 is a grid of (strips j → j+2) × (strips j−1 → j+1).
+      const int k = chart.valence();
+      for (int j = 0; j < k; ++j) regular += n[j] * n[(j + k - 1) % k];
+    }
+    double perimeter = 0;
+    for (int64_t side : side_lengths(layout, static_cast<int>(c), lengths))
+      perimeter += static_cast<double>(side);
+    // Emergency flow lengthens sides beyond the strips: scale the pattern's area to the
+    // actual perimeter (exact for regular charts, where both perimeters agree).
+    quads[c] = strip_total > 0 ? regular * std::pow(perimeter / (2 * strip_total), 2)
+                               : std::pow(perimeter / 4, 2);
+  }
+  return quads;
 }
 
 }  // namespace bimdf::quant

@@ -46,22 +46,19 @@ void check_quantization(const Layout& layout, const std::vector<int64_t>& length
   }
 }
 
-}  // namespace
-
-double target_edge_length(const Layout& layout, const QuantizeOptions& o) {
-  if (o.edge_length > 0) return o.edge_length;
-  if (o.target_faces > 0)
-    return std::sqrt(surface_area(layout.mesh) / static_cast<double>(o.target_faces));
-  return layout.average_edge_length * o.scale;
+std::vector<double> subside_targets(const Layout& layout, double edge_length) {
+  std::vector<double> targets;
+  for (const Subside& s : layout.subsides) targets.push_back(std::max(1.0, s.length / edge_length));
+  return targets;
 }
 
-Quantization quantize(const Layout& layout, const QuantizeOptions& o) {
+// One or two rounds (note §3.7) at edge length ℓ.
+Quantization quantize_at(const Layout& layout, double edge_length, const QuantizeOptions& o) {
   Quantization q;
-  q.edge_length = target_edge_length(layout, o);
+  q.edge_length = edge_length;
   if (!(q.edge_length > 0) || !std::isfinite(q.edge_length))
     throw std::invalid_argument("the target edge length must be positive and finite");
-  for (const Subside& s : layout.subsides)
-    q.targets.push_back(std::max(1.0, s.length / q.edge_length));
+  q.targets = subside_targets(layout, q.edge_length);
 
   std::vector<AlignmentPair> pairs;
   if (o.align) pairs = find_alignment_pairs(layout);
@@ -86,6 +83,9 @@ Quantization quantize(const Layout& layout, const QuantizeOptions& o) {
     r.lengths = read_subside_lengths(r.model, r.solution.flow);
     check_quantization(layout, r.lengths);
     // Energies count every pair round 1 found, dropped or not, like the reference's report.
+    double quads = 0;
+    for (double x : estimate_quads(layout, r.model, r.solution.flow, r.lengths)) quads += x;
+    r.estimated_quads = quads;
     r.energies = evaluate_quantization(layout, q.targets, r.lengths,
                                        q.rounds.empty() ? pairs : q.rounds[0].pairs, o.model);
     q.rounds.push_back(std::move(r));
@@ -116,6 +116,38 @@ Quantization quantize(const Layout& layout, const QuantizeOptions& o) {
     }
   }
   return q;
+}
+
+}  // namespace
+
+double target_edge_length(const Layout& layout, const QuantizeOptions& o) {
+  if (o.edge_length > 0) return o.edge_length;
+  if (o.target_faces > 0)
+    return std::sqrt(surface_area(layout.mesh) / static_cast<double>(o.target_faces));
+  return layout.average_edge_length * o.scale;
+}
+
+Quantization quantize(const Layout& layout, const QuantizeOptions& o) {
+  Quantization q = quantize_at(layout, target_edge_length(layout, o), o);
+  if (o.edge_length > 0 || o.target_faces <= 0) return q;
+  // Squares of side ℓ tiling the surface are only a start: short subsides round up to 1 and
+  // patterns add quads. The count falls about as ℓ^−p, p = 2 at fine scales and less where
+  // lengths reach their minimum, so p is re-estimated from the last two steps (a secant step
+  // in log–log) until the count is within 1%; the closest quantization is kept.
+  const double wanted = static_cast<double>(o.target_faces);
+  auto quads = [](const Quantization& x) { return x.final_round().estimated_quads; };
+  Quantization best = q;
+  double exponent = 2;
+  for (int step = 0; step < 8 && std::fabs(quads(q) - wanted) > 0.01 * wanted; ++step) {
+    const double length = q.edge_length * std::pow(quads(q) / wanted, 1 / exponent);
+    Quantization next = quantize_at(layout, length, o);
+    if (quads(next) == quads(q)) break;  // the count no longer moves (coarsest possible)
+    exponent =
+        std::clamp(std::log(quads(q) / quads(next)) / std::log(length / q.edge_length), 0.25, 4.0);
+    q = std::move(next);
+    if (std::fabs(quads(q) - wanted) < std::fabs(quads(best) - wanted)) best = q;
+  }
+  return best;
 }
 
 }  // namespace bimdf::quant

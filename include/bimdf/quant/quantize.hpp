@@ -56,6 +56,12 @@ struct AlignmentPair {
 // the border or a side with several subsides are dropped, each chain kept once.
 std::vector<AlignmentPair> find_alignment_pairs(const Layout& layout);
 
+// The strip edges of one family of a chart (sides j and j+2) and their parallel
+// singularity-on-boundary edges, each unit of which cancels a strip.
+struct StripEdges {
+  std::vector<int> strips, cancels;
+};
+
 // A round's Bi-MDF problem and how to read subside lengths back from its flow.
 struct FlowModel {
   Problem problem;
@@ -64,6 +70,8 @@ struct FlowModel {
   // Per subside on a chain: its two virtual edges on each chart's side, [chart slot][half];
   // −1 for unpaired subsides. Used for the second round's new targets.
   std::vector<std::array<std::array<int, 2>, 2>> virtual_edges;
+  // Per chart, per strip family (quads: 2, others: one per side).
+  std::vector<std::vector<StripEdges>> chart_strips;
   int boundary_node = -1;
 };
 
@@ -81,6 +89,13 @@ FlowModel build_flow_model(
 
 // Subside lengths from a flow of the model.
 std::vector<int64_t> read_subside_lengths(const FlowModel& model, const std::vector<int64_t>& flow);
+
+// The number of quads each chart's pattern will have, from the strip counts of a flow: the
+// regular pattern's corner grids, exact for regular charts; irregular charts are scaled to
+// their perimeter (an estimate until the padded pattern is built).
+std::vector<double> estimate_quads(const Layout& layout, const FlowModel& model,
+                                   const std::vector<int64_t>& flow,
+                                   const std::vector<int64_t>& lengths);
 
 // QuadWild-style evaluation of a quantization (note §4.4).
 struct Energies {
@@ -113,8 +128,9 @@ Energies evaluate_quantization(const Layout& layout, const std::vector<double>& 
 struct QuantizeOptions {
   ModelOptions model;
   // The target edge length ℓ: `edge_length` if > 0; else, if `target_faces` > 0, the ℓ at
-  // which the surface area holds about that many squares of side ℓ; else QuadWild's
-  // average triangle edge × `scale`.
+  // which the quantization gives about that many quads (estimate_quads; within 1% where the
+  // layout allows, found by up to 9 quantizations); else
+  // QuadWild's average triangle edge × `scale`.
   double scale = 1;
   double edge_length = 0;
   int64_t target_faces = 0;
@@ -136,6 +152,7 @@ struct QuantizationRound {
   std::vector<int64_t> lengths;
   Energies energies;
   std::vector<AlignmentPair> pairs;
+  double estimated_quads = 0;  // see estimate_quads
   double time_model_s = 0, time_solve_s = 0;
 };
 
@@ -148,7 +165,8 @@ struct Quantization {
   const std::vector<int64_t>& lengths() const { return rounds.back().lengths; }
 };
 
-// The target edge length ℓ the options ask for (see QuantizeOptions).
+// The target edge length ℓ the options ask for; for `target_faces`, the starting point of
+// quantize's search (see QuantizeOptions).
 double target_edge_length(const Layout& layout, const QuantizeOptions& options);
 
 // Solves the model exactly (one or two rounds). Every subside length is ≥ 1 and every chart
