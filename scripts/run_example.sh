@@ -2,7 +2,8 @@
 # Sets up (Debian packages), builds the bimdf CLI and runs the main job on the bundled example, a
 # real Bi-MDF instance (the Stanford bunny's quantization model from QuadWild): validate it and
 # print its summary, solve it exactly, write the solution JSON and verify it with
-# `bimdf check`. Usage: scripts/run_example.sh
+# `bimdf check`; then quantize the bunny's patch layout itself (bimdf quantize), writing the
+# integer subside lengths as JSON. Usage: scripts/run_example.sh
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/setup.sh"
@@ -17,3 +18,9 @@ echo
 echo
 "$build/bin/bimdf" check "$example" "$solution"
 echo "solution written to $solution"
+echo
+layout="$root/examples/npm_bunny/npm_bunny.obj"
+quantization="$build/npm_bunny.quant.json"
+"$build/bin/bimdf" quantize "$layout"
+"$build/bin/bimdf" quantize "$layout" -o "$quantization" >/dev/null
+echo "quantization written to $quantization"

@@ -202,8 +202,9 @@ int run_quantize(QuantizeCommandOptions o) {
     << std::llround(last.estimated_quads) << " quads\n";
   if (o.quantize.align)
     t << "alignment     " << e.aligned_pairs << " of " << e.pairs << " pairs aligned"
-      << (q.rounds.size() > 1 ? " (round 1 found " + std::to_string(q.rounds[0].pairs.size()) + ")"
-                              : "")
+      << (q.rounds.size() > 1
+              ? " (round 2 kept " + std::to_string(q.rounds[1].pairs.size()) + " as constraints)"
+              : "")
       << "\n";
   t << "time          " << ms(seconds_since(start)) << " (read " << ms(read_s) << ", model "
     << ms(model_s) << ", solve " << ms(solve_s) << ")\n";
