@@ -19,55 +19,17 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "bench_util.hpp"
 #include "bimdf/generate.hpp"
 #include "bimdf/io.hpp"
+#include "layout_bench.hpp"
 #include "milp_model.hpp"
-
-extern char** environ;
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-struct Run {
-  json solution;
-  double peak_rss_mb = 0;
-};
-
-// Runs the CLI with `args`, returns its JSON output and the child's peak resident memory.
-Run run_cli(const std::string& cli, const std::vector<std::string>& args) {
-  int out[2];
-  if (pipe(out) != 0) throw std::runtime_error("pipe failed");
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
-  posix_spawn_file_actions_addclose(&actions, out[0]);
-  std::vector<char*> argv{const_cast<char*>(cli.c_str())};
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid;
-  if (posix_spawn(&pid, cli.c_str(), &actions, nullptr, argv.data(), environ) != 0)
-    throw std::runtime_error("cannot run " + cli);
-  posix_spawn_file_actions_destroy(&actions);
-  close(out[1]);
-  std::string text;
-  char buf[65536];
-  for (ssize_t n; (n = read(out[0], buf, sizeof buf)) > 0;) text.append(buf, n);
-  close(out[0]);
-  int status = 0;
-  rusage usage{};
-  wait4(pid, &status, 0, &usage);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) > 1)
-    throw std::runtime_error(cli + " failed on " + args.back());
-  return {json::parse(text), usage.ru_maxrss / 1024.0};
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using namespace bimdf::bench;
 
 struct Instance {
   std::string name, path, group;  // group: "shared" or "scaling"
@@ -143,27 +105,7 @@ Row measure(const std::string& cli, const Instance& in, bool exact, int repeats,
   return row;
 }
 
-std::string fmt(double v, int precision = 3) {
-  if (std::isnan(v)) return "–";
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
-
 double stat(const json& s, const char* key) { return s.contains(key) ? s[key].get<double>() : 0; }
-
-std::string shell(const std::string& cmd) {
-  std::string out;
-  if (FILE* f = popen(cmd.c_str(), "r")) {
-    char buf[512];
-    while (fgets(buf, sizeof buf, f)) out += buf;
-    pclose(f);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
-  return out;
-}
 
 }  // namespace
 
@@ -193,7 +135,18 @@ int main(int argc, char** argv) {
                  "Markdown file whose section between <!-- bench:begin --> and "
                  "<!-- bench:end --> is replaced by the results");
   app.add_option("--cli", cli, "The bimdf program to run");
+  std::string layouts_dir;
+  bool only_layouts = false;
+  app.add_flag("--only-layouts", only_layouts,
+               "Run just the layout benchmark (no instances, no scaling series)");
+  app.add_option("--layouts", layouts_dir,
+                 "Folder of QuadWild layouts (with expected.tsv): benchmark `bimdf quantize` and "
+                 "replace the <!-- quantize:begin/end --> section of the Markdown file");
   CLI11_PARSE(app, argc, argv);
+  if (only_layouts) {
+    instances_dir.clear();
+    scaling.clear();
+  }
 
   std::vector<Instance> instances;
   if (!instances_dir.empty()) {
@@ -381,19 +334,17 @@ int main(int argc, char** argv) {
            << " |\n";
   }
   std::cout << md.str();
-  if (!md_path.empty()) {
-    std::ifstream in(md_path);
-    std::stringstream old;
-    old << in.rdbuf();
-    std::string text = old.str();
-    const std::string begin = "<!-- bench:begin -->", end = "<!-- bench:end -->";
-    const size_t b = text.find(begin), e = text.find(end);
-    if (b == std::string::npos || e == std::string::npos || e < b) {
-      std::cerr << md_path << ": no " << begin << " ... " << end << " section to replace\n";
+  if (!rows.empty() && !md_path.empty() && !replace_section(md_path, "bench", md.str())) {
+    std::cerr << md_path << ": no <!-- bench:begin --> ... <!-- bench:end --> section\n";
+    return 2;
+  }
+  if (!layouts_dir.empty()) {
+    const std::string section = benchmark_layouts(cli, layouts_dir, repeats);
+    std::cout << "\n" << section;
+    if (!md_path.empty() && !replace_section(md_path, "quantize", section)) {
+      std::cerr << md_path << ": no <!-- quantize:begin --> ... <!-- quantize:end --> section\n";
       return 2;
     }
-    text = text.substr(0, b + begin.size()) + "\n" + md.str() + text.substr(e);
-    std::ofstream(md_path) << text;
   }
   return 0;
 }

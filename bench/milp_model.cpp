@@ -36,7 +36,8 @@ MilpResult solve_milp(const Problem& p, int64_t window_lower, int64_t window_upp
   std::vector<std::vector<std::pair<int, double>>> rows(p.num_nodes());
   for (int e = 0; e < edges; ++e) {
     rows[p.end_a[e].node].push_back({e, static_cast<double>(p.end_a[e].sign())});
-    if (!p.is_outer(e)) rows[p.end_b[e].node].push_back({e, static_cast<double>(p.end_b[e].sign())});
+    if (!p.is_outer(e))
+      rows[p.end_b[e].node].push_back({e, static_cast<double>(p.end_b[e].sign())});
   }
   for (int v = 0; v < p.num_nodes(); ++v) {
     std::vector<int> cols;

@@ -11,5 +11,6 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBIMDF_BUILD_TESTS=OFF 
 cmake --build "$build" -j"${JOBS:-2}" --target bimdf_bench bimdf_cli
 instances=()
 [ -d "$root/../shared/data/instances" ] && instances=(--instances "$root/../shared/data/instances")
+[ -d "$root/../shared/data/layouts" ] && instances+=(--layouts "$root/../shared/data/layouts")
 "$build/bin/bimdf_bench" "${instances[@]}" --csv "$root/docs/benchmarks.csv" \
   --markdown "$root/docs/benchmarks.md" --milp-seconds 10 "$@"

@@ -94,6 +94,13 @@ CLI::App* add_quantize_command(CLI::App& app, QuantizeCommandOptions& o) {
                   "Regularity weight of non-quad charts (regularityNonQuadrilateralsWeight)")
       ->default_val(0.9)
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--unalign-weights", o.unalign_weights,
+                  "Price of misalignment along chains in rounds 1 and 2 (unalign_weight of "
+                  "paired_initial and paired_resolve)")
+      ->expected(2)
+      ->delimiter(',')
+      ->default_str("2,4")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--half-targets", o.half_targets,
                 "Split an aligned side's target in the middle (flow_virtual_half) instead of "
                 "where a triangle's regular pattern puts the separatrix");
@@ -115,6 +122,10 @@ CLI::App* add_quantize_command(CLI::App& app, QuantizeCommandOptions& o) {
 int run_quantize(QuantizeCommandOptions o) {
   const auto start = std::chrono::steady_clock::now();
   o.quantize.model.simple_targets = !o.half_targets;
+  if (o.unalign_weights.size() == 2) {
+    o.quantize.initial.unalign_weight = o.unalign_weights[0];
+    o.quantize.resolve.unalign_weight = o.unalign_weights[1];
+  }
   const quant::Layout layout = quant::read_quadwild_layout(o.layout);
   const double read_s = seconds_since(start);
   const quant::Quantization q = quant::quantize(layout, o.quantize);

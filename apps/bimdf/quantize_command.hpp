@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "bimdf/quant/quantize.hpp"
 #include "output.hpp"
@@ -13,6 +14,7 @@ struct QuantizeCommandOptions {
   std::string layout;       // NAME.obj beside NAME.patch, NAME.corners, …
   std::string write_bimdf;  // export the final round's Bi-MDF model
   bool half_targets = false;
+  std::vector<double> unalign_weights;  // rounds 1 and 2; empty: the defaults
   bool verbose = false;
   quant::QuantizeOptions quantize;
   OutputOptions out;

@@ -1,0 +1,32 @@
+// Helpers shared by the benchmark programs: running the CLI in its own process, medians,
+// number formatting, shell output, and replacing a generated section of a Markdown file.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace bimdf::bench {
+
+struct Run {
+  nlohmann::json solution;  // the CLI's JSON output
+  double peak_rss_mb = 0;   // the child's peak resident memory
+};
+
+// Runs `cli` with `args` (the last one names the input, for error messages); exit codes 0 and
+// 1 are results, anything else throws.
+Run run_cli(const std::string& cli, const std::vector<std::string>& args);
+
+double median(std::vector<double> v);
+
+// Fixed-point text, "–" for NaN.
+std::string fmt(double v, int precision = 3);
+
+// A shell command's output without the trailing newline.
+std::string shell(const std::string& cmd);
+
+// Replaces what lies between "<!-- NAME:begin -->" and "<!-- NAME:end -->" in the file at
+// `path` by `body`; false if the markers are missing.
+bool replace_section(const std::string& path, const std::string& name, const std::string& body);
+
+}  // namespace bimdf::bench
