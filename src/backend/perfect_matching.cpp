@@ -1,11 +1,13 @@
 // LEMON adapter for perfect_matching.hpp; C++17 (DESIGN §6), no LEMON type leaves this file.
 #include "backend/perfect_matching.hpp"
 
-#include <cmath>
 #include <lemon/matching.h>
 #include <lemon/smart_graph.h>
 
+#include <cmath>
+
 #include "backend/min_cost_flow.hpp"
+#include "core/deep_stack.hpp"
 
 namespace bimdf::detail {
 
@@ -21,11 +23,19 @@ std::optional<std::vector<char>> max_weight_perfect_matching(const MatchingGraph
   lemon::SmartGraph::EdgeMap<int64_t> weight(g);
   for (int e = 0; e < in.num_edges(); ++e)
     weight[g.edgeFromId(e)] = std::llround(in.weight[e] * scale);
-  lemon::MaxWeightedPerfectMatching<lemon::SmartGraph, lemon::SmartGraph::EdgeMap<int64_t>>
-      matching(g, weight);
-  if (!matching.run()) return std::nullopt;
-  std::vector<char> matched(in.num_edges(), 0);
-  for (int e = 0; e < in.num_edges(); ++e) matched[e] = matching.matching(g.edgeFromId(e));
+  std::optional<std::vector<char>> matched;
+  // Blossom nesting depth is bounded by num_nodes / 2 and LEMON recurses once per level
+  // (about 180 bytes a frame in a release build, a few times that with sanitizers), so the
+  // default stack suffices below ~16k nodes: see deep_stack.hpp.
+  const std::size_t stack_bytes =
+      in.num_nodes < 16384 ? 0 : (std::size_t{64} << 20) + std::size_t(in.num_nodes) * 512;
+  run_with_stack(stack_bytes, [&] {
+    lemon::MaxWeightedPerfectMatching<lemon::SmartGraph, lemon::SmartGraph::EdgeMap<int64_t>>
+        matching(g, weight);
+    if (!matching.run()) return;
+    matched.emplace(in.num_edges(), 0);
+    for (int e = 0; e < in.num_edges(); ++e) (*matched)[e] = matching.matching(g.edgeFromId(e));
+  });
   return matched;
 }
 

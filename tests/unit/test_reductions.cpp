@@ -5,10 +5,12 @@
 
 #include <cmath>
 #include <iostream>
+#include <stdexcept>
 
 #include "backend/min_cost_flow.hpp"
 #include "bimdf/flow.hpp"
 #include "brute_force.hpp"
+#include "core/deep_stack.hpp"
 #include "random_problem.hpp"
 #include "reduce/chains.hpp"
 #include "reduce/components.hpp"
@@ -302,3 +304,28 @@ TEST(Reductions, PhaseOneRefinementDecidesFeasibility) {
 
 }  // namespace
 }  // namespace bimdf
+
+namespace {
+
+// Recursion that needs depth * (sizeof pad + frame) bytes of stack: 200000 levels of 256-byte
+// pads need more than 50 MiB, far beyond the default 8 MiB.
+int deep_recursion(int depth) {
+  volatile char pad[256];
+  pad[depth % 256] = static_cast<char>(depth);
+  if (depth == 0) return pad[0];
+  return deep_recursion(depth - 1) + (pad[depth % 256] == static_cast<char>(depth));
+}
+
+}  // namespace
+
+TEST(DeepStack, RecursionDeeperThanTheDefaultStackCompletes) {
+  int result = -1;
+  bimdf::detail::run_with_stack(std::size_t{512} << 20, [&] { result = deep_recursion(200000); });
+  EXPECT_EQ(result, 200000);
+}
+
+TEST(DeepStack, ExceptionsReachTheCaller) {
+  EXPECT_THROW(bimdf::detail::run_with_stack(
+                   std::size_t{64} << 20, [] { throw std::runtime_error("from the deep thread"); }),
+               std::runtime_error);
+}
