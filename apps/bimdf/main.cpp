@@ -19,6 +19,7 @@
 #include "bimdf/version.hpp"
 #include "output.hpp"
 #include "quantize_command.hpp"
+#include "remesh_command.hpp"
 #include "solve_command.hpp"
 
 namespace {
@@ -269,6 +270,12 @@ int main(int argc, char** argv) {
   CLI::App* solve = add_solve_command(app, solve_options);
   QuantizeCommandOptions quantize_options;
   CLI::App* quantize = add_quantize_command(app, quantize_options);
+  RemeshCommandOptions remesh_options;
+  CLI::App* remesh = add_remesh_command(app, remesh_options);
+  RemeshCommandOptions tessellate_options;
+  CLI::App* tessellate = add_tessellate_command(app, tessellate_options);
+  MetricsCommandOptions metrics_options;
+  CLI::App* metrics = add_metrics_command(app, metrics_options);
 
   try {
     app.parse(argc, argv);
@@ -283,6 +290,9 @@ int main(int argc, char** argv) {
     if (*convert) return run_convert(problem, convert_out, to, libsatsuma);
     if (*solve) return run_solve(solve_options);
     if (*quantize) return run_quantize(quantize_options);
+    if (*remesh) return run_remesh(remesh_options);
+    if (*tessellate) return run_tessellate(tessellate_options);
+    if (*metrics) return run_metrics(metrics_options);
     if (*generate) return run_generate(family, size, seed, generate_out, generate_format);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";

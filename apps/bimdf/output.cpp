@@ -4,10 +4,10 @@
 
 #include <cerrno>
 #include <charconv>
-#include <iostream>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 
 namespace bimdf::cli {
 
@@ -22,6 +22,16 @@ void deliver(const OutputOptions& out, const std::string& human, const std::stri
              const std::vector<std::string>& inputs) {
   if (!out.file.empty()) write_output_file(out.file, json_text, inputs);
   std::cout << (out.json ? json_text : human);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string ms(double seconds) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f ms", seconds * 1e3);
+  return buf;
 }
 
 std::string shortest_decimal(double x) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ void add_output_options(CLI::App* cmd, OutputOptions& out);
 // refusing to overwrite any of `inputs`.
 void deliver(const OutputOptions& out, const std::string& human, const std::string& json_text,
              const std::vector<std::string>& inputs);
+
+// Seconds elapsed since `start`, and a duration as "12.3 ms" for the human summaries.
+double seconds_since(std::chrono::steady_clock::time_point start);
+std::string ms(double seconds);
 
 // The shortest decimal that reads back as exactly `x` (1.135, not 1.1350000000000000).
 std::string shortest_decimal(double x);

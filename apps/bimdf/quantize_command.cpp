@@ -15,16 +15,6 @@ namespace {
 
 using nlohmann::json;
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-std::string ms(double seconds) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f ms", seconds * 1e3);
-  return buf;
-}
-
 std::string number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", v);
@@ -60,14 +50,14 @@ json stats_json(const Solution& s) {
 
 }  // namespace
 
-CLI::App* add_quantize_command(CLI::App& app, QuantizeCommandOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "quantize",
-      "Quantize a QuadWild patch layout: integer subside lengths from an exact Bi-MDF solve");
-  cmd->add_option("LAYOUT", o.layout,
+void add_layout_argument(CLI::App* cmd, std::string& layout) {
+  cmd->add_option("LAYOUT", layout,
                   "The layout's triangle mesh NAME.obj; NAME.patch and NAME.corners (and, if "
                   "present, NAME.feature, NAME.c_feature) are read from beside it")
       ->required();
+}
+
+void add_quantize_options(CLI::App* cmd, QuantizeCommandOptions& o) {
   auto* scale = cmd->add_option("--scale", o.quantize.scale,
                                 "Target edge length as a multiple of the mesh's average triangle "
                                 "edge (QuadWild's scaleFact)")
@@ -114,21 +104,32 @@ CLI::App* add_quantize_command(CLI::App& app, QuantizeCommandOptions& o) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--write-bimdf", o.write_bimdf,
                   "Also write the final round's Bi-MDF model (.bimdf or .json by extension)");
+}
+
+CLI::App* add_quantize_command(CLI::App& app, QuantizeCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "quantize",
+      "Quantize a QuadWild patch layout: integer subside lengths from an exact Bi-MDF solve");
+  add_layout_argument(cmd, o.layout);
+  add_quantize_options(cmd, o);
   cmd->add_flag("-v,--verbose", o.verbose, "Per-round sizes, objectives and times");
   add_output_options(cmd, o.out);
   return cmd;
 }
 
-int run_quantize(QuantizeCommandOptions o) {
-  const auto start = std::chrono::steady_clock::now();
-  o.quantize.model.simple_targets = !o.half_targets;
+quant::QuantizeOptions effective_quantize_options(const QuantizeCommandOptions& o) {
+  quant::QuantizeOptions q = o.quantize;
+  q.model.simple_targets = !o.half_targets;
   if (o.unalign_weights.size() == 2) {
-    o.quantize.initial.unalign_weight = o.unalign_weights[0];
-    o.quantize.resolve.unalign_weight = o.unalign_weights[1];
+    q.initial.unalign_weight = o.unalign_weights[0];
+    q.resolve.unalign_weight = o.unalign_weights[1];
   }
-  const quant::Layout layout = quant::read_quadwild_layout(o.layout);
-  const double read_s = seconds_since(start);
-  const quant::Quantization q = quant::quantize(layout, o.quantize);
+  return q;
+}
+
+QuantizationReport report_quantization(const quant::Layout& layout, const quant::Quantization& q,
+                                       const QuantizeCommandOptions& o, double read_s,
+                                       double total_s) {
   const quant::QuantizationRound& last = q.final_round();
   double model_s = 0, solve_s = 0;
   for (const auto& r : q.rounds) model_s += r.time_model_s, solve_s += r.time_solve_s;
@@ -185,18 +186,8 @@ int run_quantize(QuantizeCommandOptions o) {
                               quant::side_lengths(layout, static_cast<int>(c), q.lengths()))}});
   }
   j["chart_details"] = chart_list;
-  j["time"] = {{"read_s", read_s},
-               {"model_s", model_s},
-               {"solve_s", solve_s},
-               {"total_s", seconds_since(start)}};
-
-  if (!o.write_bimdf.empty()) {
-    const bool as_json =
-        o.write_bimdf.size() >= 5 && o.write_bimdf.substr(o.write_bimdf.size() - 5) == ".json";
-    write_output_file(o.write_bimdf,
-                      as_json ? to_json_problem(last.model.problem) : to_bimdf(last.model.problem),
-                      {o.layout});
-  }
+  j["time"] = {
+      {"read_s", read_s}, {"model_s", model_s}, {"solve_s", solve_s}, {"total_s", total_s}};
 
   const quant::Energies& e = last.energies;
   std::ostringstream t;
@@ -217,16 +208,35 @@ int run_quantize(QuantizeCommandOptions o) {
               ? " (round 2 kept " + std::to_string(q.rounds[1].pairs.size()) + " as constraints)"
               : "")
       << "\n";
-  t << "time          " << ms(seconds_since(start)) << " (read " << ms(read_s) << ", model "
-    << ms(model_s) << ", solve " << ms(solve_s) << ")\n";
+  t << "time          " << ms(total_s) << " (read " << ms(read_s) << ", model " << ms(model_s)
+    << ", solve " << ms(solve_s) << ")\n";
   if (o.verbose)
     for (size_t r = 0; r < q.rounds.size(); ++r)
       t << "round " << r + 1 << "       " << q.rounds[r].model.problem.num_nodes() << " nodes, "
         << q.rounds[r].model.problem.num_edges() << " edges, " << q.rounds[r].pairs.size()
         << " pairs; objective " << number(q.rounds[r].solution.objective) << "; model "
         << ms(q.rounds[r].time_model_s) << ", solve " << ms(q.rounds[r].time_solve_s) << "\n";
+  return {j, t.str()};
+}
+
+void write_quantization_model(const quant::Quantization& q, const QuantizeCommandOptions& o) {
+  if (o.write_bimdf.empty()) return;
+  const Problem& problem = q.final_round().model.problem;
+  const bool as_json =
+      o.write_bimdf.size() >= 5 && o.write_bimdf.substr(o.write_bimdf.size() - 5) == ".json";
+  write_output_file(o.write_bimdf, as_json ? to_json_problem(problem) : to_bimdf(problem),
+                    {o.layout});
+}
+
+int run_quantize(const QuantizeCommandOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const quant::Layout layout = quant::read_quadwild_layout(o.layout);
+  const double read_s = seconds_since(start);
+  const quant::Quantization q = quant::quantize(layout, effective_quantize_options(o));
+  write_quantization_model(q, o);
+  const QuantizationReport report = report_quantization(layout, q, o, read_s, seconds_since(start));
   for (const std::string& w : layout.warnings) std::cerr << "warning: " << w << "\n";
-  deliver(o.out, t.str(), j.dump(1) + "\n", {o.layout});
+  deliver(o.out, report.text, report.json.dump(1) + "\n", {o.layout});
   return kOk;
 }
 

@@ -16,8 +16,8 @@ struct SolveCommandOptions {
   std::string cover = "asymmetric";
   bool no_simplify = false;
   int threads = 1;
-  int64_t max_rounds = 0;     // 0: unlimited
-  double time_limit = 0;      // seconds; 0: unlimited
+  int64_t max_rounds = 0;  // 0: unlimited
+  double time_limit = 0;   // seconds; 0: unlimited
   bool no_lower_bound = false;
   bool verbose = false;
   OutputOptions out;

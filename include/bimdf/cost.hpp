@@ -67,14 +67,14 @@ class Cost {
   CostKind kind() const { return kind_; }
 
   // Parameters; each is meaningful only for the kinds named in the header comment.
-  int64_t guess() const { return guess_; }  // Zero
-  double slope() const { return a_; }       // Linear
-  double target() const { return t_; }      // Abs, AsymAbs, Quad, ScaleFactor
-  double weight() const { return a_; }      // Abs, Quad, ScaleFactor
-  double weight_below() const { return a_; }  // AsymAbs
-  double weight_above() const { return b_; }  // AsymAbs
-  double eps() const { return b_; }           // ScaleFactor
-  int64_t first() const { return guess_; }    // PiecewiseLinear
+  int64_t guess() const { return guess_; }                       // Zero
+  double slope() const { return a_; }                            // Linear
+  double target() const { return t_; }                           // Abs, AsymAbs, Quad, ScaleFactor
+  double weight() const { return a_; }                           // Abs, Quad, ScaleFactor
+  double weight_below() const { return a_; }                     // AsymAbs
+  double weight_above() const { return b_; }                     // AsymAbs
+  double eps() const { return b_; }                              // ScaleFactor
+  int64_t first() const { return guess_; }                       // PiecewiseLinear
   const std::vector<double>& values() const { return values_; }  // PiecewiseLinear
   const std::vector<Cost>& terms() const { return terms_; }      // Sum
 

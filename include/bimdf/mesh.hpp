@@ -1,4 +1,4 @@
-// Triangle meshes as plain arrays, and reading them from Wavefront OBJ.
+// Triangle and quad meshes as plain arrays, and reading and writing them as Wavefront OBJ.
 //
 // The quantizer's input surface (a QuadWild layout's `NAME.obj`) is a triangle mesh whose face
 // order and vertex order are meaningful: the layout's companion files refer to faces and
@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <iosfwd>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,5 +30,25 @@ TriangleMesh parse_obj_triangles(std::string_view text, const std::string& sourc
 
 // Reads an OBJ file (see parse_obj_triangles); throws InputError if it cannot be read.
 TriangleMesh read_obj_triangles(const std::string& path);
+
+// An all-quad mesh: what tessellation produces. `quad_patch[f]` is the chart quad f was made
+// for (−1 when unknown); written to OBJ as groups `g patch_N`.
+struct QuadMesh {
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<std::array<int, 4>> quads;  // counter-clockwise seen from outside
+  std::vector<int> quad_patch;
+
+  int num_vertices() const { return static_cast<int>(vertices.size()); }
+  int num_quads() const { return static_cast<int>(quads.size()); }
+};
+
+// Parses OBJ text whose faces are all quads, as parse_obj_triangles does triangles; a group
+// statement `g patch_N` assigns the faces after it to patch N (other groups: −1).
+QuadMesh parse_obj_quads(std::string_view text, const std::string& source);
+QuadMesh read_obj_quads(const std::string& path);
+
+// Writes `v` and `f` lines (1-based), a `g patch_N` line before each run of quads of patch N,
+// and `comment` as a first `#` line if not empty.
+void write_obj(std::ostream& out, const QuadMesh& mesh, const std::string& comment = "");
 
 }  // namespace bimdf

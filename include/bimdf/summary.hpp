@@ -19,10 +19,10 @@ struct ProblemSummary {
   // Top-level cost kind of each edge, and every term of every (nested) sum counted by its kind.
   std::array<int, kNumCostKinds> cost_kinds{};
   std::array<int, kNumCostKinds> cost_terms{};
-  int fixed_edges = 0;           // lower == upper
-  int finite_upper = 0;          // upper < inf
-  int positive_lower = 0;        // lower > 0
-  int negative_lower = 0;        // lower < 0 (including -inf)
+  int fixed_edges = 0;     // lower == upper
+  int finite_upper = 0;    // upper < inf
+  int positive_lower = 0;  // lower > 0
+  int negative_lower = 0;  // lower < 0 (including -inf)
   int components = 0;
   int largest_component_nodes = 0;
   int largest_component_edges = 0;

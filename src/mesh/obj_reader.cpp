@@ -1,7 +1,10 @@
-// Line-oriented OBJ reader for triangle meshes (mesh.hpp).
+// Line-oriented OBJ reading and writing for triangle and quad meshes (mesh.hpp).
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <ostream>
 #include <string>
+#include <tuple>
 
 #include "bimdf/error.hpp"
 #include "bimdf/io.hpp"
@@ -26,9 +29,26 @@ std::vector<std::string_view> words_of(std::string_view line) {
 
 }  // namespace
 
-TriangleMesh parse_obj_triangles(std::string_view text, const std::string& source) {
-  TriangleMesh mesh;
-  int line_number = 0;
+namespace {
+
+// The patch a `g` statement names: N for `g patch_N`, else −1.
+int patch_of_group(const std::vector<std::string_view>& words) {
+  int64_t id = 0;
+  if (words.size() > 1 && words[1].substr(0, 6) == "patch_" &&
+      detail::parse_int64(words[1].substr(6), id) && id >= 0 && id <= INT32_MAX)
+    return static_cast<int>(id);
+  return -1;
+}
+
+// The vertices and faces of OBJ text; every face must have as many vertices as Face holds.
+// With `face_patch`, each face's patch (patch_of_group of the last `g`) is appended to it.
+template <typename Face>
+void parse_obj(std::string_view text, const std::string& source,
+               std::vector<std::array<double, 3>>& vertices, std::vector<Face>& faces,
+               std::vector<int>* face_patch) {
+  constexpr int arity = std::tuple_size_v<Face>;
+  const std::string expected = arity == 3 ? "a triangle" : "a quad";
+  int line_number = 0, patch = -1;
   size_t pos = 0;
   while (pos < text.size()) {
     size_t end = text.find('\n', pos);
@@ -39,7 +59,9 @@ TriangleMesh parse_obj_triangles(std::string_view text, const std::string& sourc
     const std::string where = "line " + std::to_string(line_number);
     const std::vector<std::string_view> w = words_of(line);
     if (w.empty() || w[0].front() == '#') continue;
-    if (w[0] == "v") {
+    if (w[0] == "g") {
+      patch = patch_of_group(w);
+    } else if (w[0] == "v") {
       if (w.size() < 4)
         throw InputError(source, where, "a vertex needs three coordinates (v x y z)");
       std::array<double, 3> p{};
@@ -48,21 +70,21 @@ TriangleMesh parse_obj_triangles(std::string_view text, const std::string& sourc
           throw InputError(
               source, where,
               "vertex coordinate " + detail::quote(w[k + 1]) + " is not a finite number");
-      mesh.vertices.push_back(p);
+      vertices.push_back(p);
     } else if (w[0] == "f") {
-      if (w.size() != 4)
+      if (static_cast<int>(w.size()) != arity + 1)
         throw InputError(source, where,
-                         "face " + std::to_string(mesh.faces.size()) + " has " +
-                             std::to_string(w.size() - 1) + " vertices, expected a triangle");
-      std::array<int, 3> f{};
-      for (int k = 0; k < 3; ++k) {
+                         "face " + std::to_string(faces.size()) + " has " +
+                             std::to_string(w.size() - 1) + " vertices, expected " + expected);
+      Face f{};
+      for (int k = 0; k < arity; ++k) {
         const std::string_view ref = w[k + 1].substr(0, w[k + 1].find('/'));
         int64_t index = 0;
         if (!detail::parse_int64(ref, index) || index == 0)
           throw InputError(
               source, where,
               "vertex reference " + detail::quote(w[k + 1]) + " is not a non-zero integer");
-        const int64_t n = mesh.num_vertices();
+        const int64_t n = static_cast<int64_t>(vertices.size());
         const int64_t id = index > 0 ? index - 1 : n + index;
         if (id < 0 || id >= n)
           throw InputError(source, where,
@@ -70,13 +92,49 @@ TriangleMesh parse_obj_triangles(std::string_view text, const std::string& sourc
                                std::to_string(n) + " vertices defined so far)");
         f[k] = static_cast<int>(id);
       }
-      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
-        throw InputError(source, where,
-                         "face " + std::to_string(mesh.faces.size()) + " repeats a vertex");
-      mesh.faces.push_back(f);
+      for (int a = 0; a < arity; ++a)
+        for (int b = a + 1; b < arity; ++b)
+          if (f[a] == f[b])
+            throw InputError(source, where,
+                             "face " + std::to_string(faces.size()) + " repeats a vertex");
+      faces.push_back(f);
+      if (face_patch) face_patch->push_back(patch);
     }
   }
+}
+
+}  // namespace
+
+TriangleMesh parse_obj_triangles(std::string_view text, const std::string& source) {
+  TriangleMesh mesh;
+  parse_obj(text, source, mesh.vertices, mesh.faces, nullptr);
   return mesh;
+}
+
+QuadMesh parse_obj_quads(std::string_view text, const std::string& source) {
+  QuadMesh mesh;
+  parse_obj(text, source, mesh.vertices, mesh.quads, &mesh.quad_patch);
+  return mesh;
+}
+
+QuadMesh read_obj_quads(const std::string& path) {
+  return parse_obj_quads(read_text_file(path), path);
+}
+
+void write_obj(std::ostream& out, const QuadMesh& mesh, const std::string& comment) {
+  if (!comment.empty()) out << "# " << comment << "\n";
+  out.precision(10);
+  for (const auto& v : mesh.vertices) out << "v " << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+  int patch = -2;
+  for (size_t f = 0; f < mesh.quads.size(); ++f) {
+    const int p = f < mesh.quad_patch.size() ? mesh.quad_patch[f] : -1;
+    if (p != patch) {
+      out << (p >= 0 ? "g patch_" + std::to_string(p) : std::string("g default")) << '\n';
+      patch = p;
+    }
+    const auto& q = mesh.quads[f];
+    out << "f " << q[0] + 1 << ' ' << q[1] + 1 << ' ' << q[2] + 1 << ' ' << q[3] + 1 << '\n';
+  }
 }
 
 TriangleMesh read_obj_triangles(const std::string& path) {

@@ -1,0 +1,270 @@
+#include "remesh_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "bimdf/error.hpp"
+#include "bimdf/io.hpp"
+#include "bimdf/metrics.hpp"
+#include "bimdf/quant/tessellate.hpp"
+
+namespace bimdf::cli {
+namespace {
+
+using nlohmann::json;
+
+void add_mesh_output(CLI::App* cmd, RemeshCommandOptions& o) {
+  cmd->add_option("-o,--output", o.mesh_out, "The quad mesh OBJ to write (one group per patch)")
+      ->required();
+  cmd->add_flag("--json", o.quantize.out.json, "Print the report as JSON on stdout");
+  cmd->add_option("--report", o.quantize.out.file, "Also write the report JSON to this file");
+  cmd->add_flag("-v,--verbose", o.verbose, "Per-chart pattern details");
+}
+
+// Subside lengths from a `bimdf quantize` JSON.
+std::vector<int64_t> read_quantization(const std::string& path, const quant::Layout& layout) {
+  const std::string text = read_text_file(path);
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError(path, "byte " + std::to_string(e.byte), "not valid JSON");
+  }
+  if (!j.is_object() || !j.contains("subside_lengths") || !j["subside_lengths"].is_array())
+    throw InputError(path, "/subside_lengths",
+                     "missing: expected the output of `bimdf quantize` (an array of integers)");
+  const json& a = j["subside_lengths"];
+  if (a.size() != layout.subsides.size())
+    throw InputError(path, "/subside_lengths",
+                     std::to_string(a.size()) + " lengths, but the layout has " +
+                         std::to_string(layout.subsides.size()) + " subsides");
+  std::vector<int64_t> lengths;
+  for (size_t s = 0; s < a.size(); ++s) {
+    if (!a[s].is_number_integer() || a[s].get<int64_t>() < 1)
+      throw InputError(path, "/subside_lengths/" + std::to_string(s),
+                       "expected a positive integer, got " + a[s].dump());
+    lengths.push_back(a[s].get<int64_t>());
+  }
+  return lengths;
+}
+
+struct TessellationReport {
+  json j;
+  std::string text;
+};
+
+TessellationReport report_tessellation(const quant::Tessellation& t, const std::string& out,
+                                       bool verbose) {
+  std::map<quant::PatternKind, int> kinds;
+  int singular = 0, charts = 0;
+  json per_chart = json::array();
+  for (const quant::ChartTiling& c : t.charts) {
+    if (c.quads == 0) {
+      per_chart.push_back(nullptr);
+      continue;
+    }
+    ++charts;
+    ++kinds[c.kind];
+    singular += c.singularities;
+    per_chart.push_back({{"pattern", quant::to_string(c.kind)},
+                         {"cuts", c.cuts},
+                         {"quads", c.quads},
+                         {"singularities", c.singularities}});
+  }
+  TessellationReport r;
+  r.j = {{"mesh", out},
+         {"quads", t.mesh.num_quads()},
+         {"vertices", t.mesh.num_vertices()},
+         {"patterns",
+          {{"regular", kinds[quant::PatternKind::Regular]},
+           {"cut", kinds[quant::PatternKind::Cut]},
+           {"fan", kinds[quant::PatternKind::Fan]}}},
+         {"pattern_singularities", singular},
+         {"charts", per_chart},
+         {"time", {{"patterns_s", t.time_patterns_s}, {"mapping_s", t.time_mapping_s}}}};
+  std::ostringstream s;
+  s << "quad mesh     " << out << ": " << t.mesh.num_quads() << " quads, " << t.mesh.num_vertices()
+    << " vertices\n";
+  s << "patterns      " << kinds[quant::PatternKind::Regular] << " regular, "
+    << kinds[quant::PatternKind::Cut] << " cut into regular parts, "
+    << kinds[quant::PatternKind::Fan] << " fans (of " << charts << " charts); " << singular
+    << " interior singularities\n";
+  s << "tessellation  patterns " << ms(t.time_patterns_s) << ", mapping " << ms(t.time_mapping_s)
+    << "\n";
+  if (verbose)
+    for (size_t c = 0; c < t.charts.size(); ++c)
+      if (t.charts[c].quads > 0 && t.charts[c].kind != quant::PatternKind::Regular)
+        s << "  chart " << c << ": " << quant::to_string(t.charts[c].kind) << ", "
+          << t.charts[c].cuts << " cuts, " << t.charts[c].quads << " quads, "
+          << t.charts[c].singularities << " singularities\n";
+  r.text = s.str();
+  return r;
+}
+
+std::string valence_list(const std::map<int, int>& counts) {
+  std::string text;
+  for (auto [valence, n] : counts)
+    text +=
+        (text.empty() ? "" : ", ") + std::to_string(n) + " of valence " + std::to_string(valence);
+  return text.empty() ? "none" : text;
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+TessellationReport report_metrics(const QuadMeshMetrics& m) {
+  TessellationReport r;
+  const auto by_valence = [](const std::map<int, int>& counts) {
+    json j = json::object();
+    for (auto [valence, n] : counts) j[std::to_string(valence)] = n;
+    return j;
+  };
+  r.j = {{"faces", m.faces},
+         {"vertices", m.vertices},
+         {"edges", m.edges},
+         {"euler_characteristic", m.euler_characteristic},
+         {"boundary_edges", m.boundary_edges},
+         {"manifold", m.manifold()},
+         {"non_manifold_edges", m.non_manifold_edges},
+         {"non_manifold_vertices", m.non_manifold_vertices},
+         {"singular_vertices", m.singular_vertices()},
+         {"interior_singularities", by_valence(m.interior_singularities)},
+         {"boundary_singularities", by_valence(m.boundary_singularities)},
+         {"scaled_jacobian",
+          {{"min", m.scaled_jacobian_min},
+           {"mean", m.scaled_jacobian_mean},
+           {"p5", m.scaled_jacobian_p5}}},
+         {"inverted", m.inverted},
+         {"base_complex_faces", m.base_complex_faces}};
+  if (m.hausdorff >= 0) {
+    r.j["hausdorff"] = m.hausdorff;
+    r.j["hausdorff_relative"] = m.hausdorff_relative;
+    r.j["flipped"] = m.flipped;
+  }
+  std::ostringstream s;
+  s << "mesh          " << m.faces << " quads, " << m.vertices << " vertices, " << m.edges
+    << " edges; Euler characteristic " << m.euler_characteristic << ", " << m.boundary_edges
+    << " boundary edges, "
+    << (m.manifold() ? std::string("manifold")
+                     : "NOT manifold (" + std::to_string(m.non_manifold_edges) + " edges, " +
+                           std::to_string(m.non_manifold_vertices) + " vertices)")
+    << "\n";
+  s << "singularities " << m.singular_vertices() << ": inside "
+    << valence_list(m.interior_singularities) << "; on the boundary "
+    << valence_list(m.boundary_singularities) << "\n";
+  s << "scaled Jac.   min " << number(m.scaled_jacobian_min) << ", mean "
+    << number(m.scaled_jacobian_mean) << ", 5th percentile " << number(m.scaled_jacobian_p5) << "; "
+    << m.inverted << " inverted\n";
+  s << "base complex  " << m.base_complex_faces << " patches\n";
+  if (m.hausdorff >= 0)
+    s << "distance      Hausdorff " << number(m.hausdorff) << " ("
+      << number(100 * m.hausdorff_relative) << "% of the bounding-box diagonal); " << m.flipped
+      << " faces facing away from the surface\n";
+  r.text = s.str();
+  return r;
+}
+
+void write_mesh(const quant::Tessellation& t, const RemeshCommandOptions& o,
+                const std::vector<std::string>& inputs) {
+  std::ostringstream obj;
+  write_obj(obj, t.mesh, "bimdf quad mesh from " + o.quantize.layout);
+  write_output_file(o.mesh_out, obj.str(), inputs);
+}
+
+}  // namespace
+
+CLI::App* add_remesh_command(CLI::App& app, RemeshCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "remesh", "Quantize a QuadWild patch layout and tessellate it into a quad mesh");
+  add_layout_argument(cmd, o.quantize.layout);
+  add_quantize_options(cmd, o.quantize);
+  add_mesh_output(cmd, o);
+  return cmd;
+}
+
+CLI::App* add_tessellate_command(CLI::App& app, RemeshCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "tessellate", "Tessellate a QuadWild patch layout with the lengths of `bimdf quantize`");
+  add_layout_argument(cmd, o.quantize.layout);
+  cmd->add_option("QUANTIZATION", o.quantization, "The JSON written by `bimdf quantize -o`")
+      ->required();
+  add_mesh_output(cmd, o);
+  return cmd;
+}
+
+CLI::App* add_metrics_command(CLI::App& app, MetricsCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "metrics", "Quality of a quad mesh: topology, singularities, scaled Jacobian, distance");
+  cmd->add_option("MESH", o.mesh, "An all-quad OBJ mesh")->required();
+  cmd->add_option("--reference", o.reference,
+                  "The surface it should follow (triangle OBJ): adds the Hausdorff distance and "
+                  "faces facing away");
+  add_output_options(cmd, o.out);
+  return cmd;
+}
+
+int run_metrics(const MetricsCommandOptions& o) {
+  const QuadMesh mesh = read_obj_quads(o.mesh);
+  TriangleMesh reference;
+  if (!o.reference.empty()) reference = read_obj_triangles(o.reference);
+  const QuadMeshMetrics m = measure_quad_mesh(mesh, o.reference.empty() ? nullptr : &reference);
+  TessellationReport r = report_metrics(m);
+  r.j["mesh"] = o.mesh;
+  if (!o.reference.empty()) r.j["reference"] = o.reference;
+  std::vector<std::string> inputs{o.mesh};
+  if (!o.reference.empty()) inputs.push_back(o.reference);
+  deliver(o.out, r.text, r.j.dump(1) + "\n", inputs);
+  return kOk;
+}
+
+int run_remesh(const RemeshCommandOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const quant::Layout layout = quant::read_quadwild_layout(o.quantize.layout);
+  const double read_s = seconds_since(start);
+  const quant::Quantization q = quant::quantize(layout, effective_quantize_options(o.quantize));
+  write_quantization_model(q, o.quantize);
+  const double quantized_s = seconds_since(start);
+  const quant::Tessellation t = quant::tessellate(layout, q.lengths());
+  write_mesh(t, o, {o.quantize.layout});
+  const QuantizationReport qr = report_quantization(layout, q, o.quantize, read_s, quantized_s);
+  TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
+  const TessellationReport mr = report_metrics(measure_quad_mesh(t.mesh, &layout.mesh));
+  json j = tr.j;
+  j["quantization"] = qr.json;
+  j["metrics"] = mr.j;
+  tr.text += mr.text;
+  j["time"]["total_s"] = seconds_since(start);
+  for (const std::string& w : layout.warnings) std::cerr << "warning: " << w << "\n";
+  deliver(o.quantize.out, qr.text + tr.text, j.dump(1) + "\n", {o.quantize.layout});
+  return kOk;
+}
+
+int run_tessellate(const RemeshCommandOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const quant::Layout layout = quant::read_quadwild_layout(o.quantize.layout);
+  const std::vector<int64_t> lengths = read_quantization(o.quantization, layout);
+  quant::Tessellation t;
+  try {
+    t = quant::tessellate(layout, lengths);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(o.quantization, "/subside_lengths", e.what());
+  }
+  write_mesh(t, o, {o.quantize.layout, o.quantization});
+  TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
+  const TessellationReport mr = report_metrics(measure_quad_mesh(t.mesh, &layout.mesh));
+  tr.j["metrics"] = mr.j;
+  tr.text += mr.text;
+  tr.j["time"]["total_s"] = seconds_since(start);
+  for (const std::string& w : layout.warnings) std::cerr << "warning: " << w << "\n";
+  deliver(o.quantize.out, tr.text, tr.j.dump(1) + "\n", {o.quantize.layout, o.quantization});
+  return kOk;
+}
+
+}  // namespace bimdf::cli

@@ -1,0 +1,60 @@
+// All-quad patterns for a k-sided patch with prescribed side subdivisions: the combinatorial
+// step of turning a quantized chart into quads (../shared/reference/quadwild_modeling.md §4.1;
+// paper §4.4 relies on the existence of such patterns for every even perimeter).
+//
+// Given side lengths l_0…l_{k−1} (k = 3…6, every l_j ≥ 1, Σ l_j even and ≥ 4), a pattern is a
+// quad mesh of the k-gon whose boundary has exactly l_j edges on side j. Regular side vectors
+// get the regular pattern (note §3.3): for k = 4 with l_0 = l_2, l_1 = l_3 a grid; for other k
+// one valence-k vertex joined to the sides, i.e. k corner grids of e_j × e_{j−1} quads where
+// e_j ≥ 0 counts the strips parallel to side j and l_j = e_{j−1} + e_{j+1}. (An e_j of 0 puts
+// the singularity on the boundary.) Every other side vector is cut, by a chain of interior
+// edges between two boundary vertices, into two sub-patches that are regular — or are cut
+// again — choosing the cut that creates the fewest singularities and whose length best fits
+// the distance it spans; the cuts play the role of the padding and edge-flow parameters of
+// Takayama et al.'s patterns (SGP 2014). Should no cut sequence work, a fan of quads around
+// one boundary vertex covers the patch, so no chart is ever left without quads.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace bimdf::quant {
+
+enum class PatternKind {
+  Regular,  // the regular pattern of the side vector (grid, or one valence-k singularity)
+  Cut,      // regular sub-patches joined along cut chains
+  Fan       // the last resort: quads fanned around one boundary vertex, no interior vertex
+};
+
+std::string to_string(PatternKind kind);
+
+// A quad pattern on the regular k-gon. Vertices 0…P−1 (P = Σ l_j) are the boundary in
+// counter-clockwise order: vertex Σ_{i<j} l_i is corner j and side j runs from corner j to
+// corner j+1. Interior vertices follow. Quads are counter-clockwise, like the boundary.
+struct QuadPattern {
+  std::vector<int> sides;                        // l_j
+  std::vector<std::array<int, 4>> quads;         // vertex ids
+  std::vector<std::array<double, 2>> positions;  // in the k-gon with unit circumradius
+  PatternKind kind = PatternKind::Regular;
+  int cuts = 0;  // cut chains used (PatternKind::Cut)
+
+  int num_vertices() const { return static_cast<int>(positions.size()); }
+  int perimeter() const;
+};
+
+// The pattern for `sides` (see above). Boundary vertices sit on the regular k-gon of unit
+// circumradius, corner j at angle π/2 + 2πj/k, evenly spaced along each side; interior
+// vertices at the average of their neighbours (Tutte's embedding, which keeps faces convex on
+// the convex polygon). Among the candidate patterns the first whose quads are all convex (no
+// corner turning clockwise) is taken; the fan is convex by construction. Throws
+// std::invalid_argument if k is outside 3…6, a side is < 1, or the perimeter is odd or < 4.
+QuadPattern make_quad_pattern(const std::vector<int>& sides);
+
+// The regular pattern's strip counts e_j (l_j = e_{j−1} + e_{j+1}; for k = 4, e_0 = l_1 and
+// e_1 = l_0 are the grid's two dimensions), or an empty vector when `sides` is not regular:
+// some e_j would be negative or fractional, or the zero e_j would not form one cyclic run
+// (the pattern would pinch at its singularity).
+std::vector<int> regular_strip_counts(const std::vector<int>& sides);
+
+}  // namespace bimdf::quant

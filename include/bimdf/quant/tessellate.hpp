@@ -1,0 +1,67 @@
+// From a quantized layout to a quad mesh (../shared/reference/quadwild_modeling.md §4.1): each
+// chart gets the quad pattern of its side lengths (pattern.hpp), mapped onto the surface through
+// a flattening of the chart's triangles onto the pattern's polygon, and the charts are stitched
+// along their subsides.
+//
+// Conformity by construction: a subside of length x gets x − 1 quad vertices at equal arc-length
+// steps along its polyline, and both charts beside it use those same vertices; subside
+// endpoints (corners, T-junctions) are the layout's own mesh vertices. Interior pattern
+// vertices are placed at the surface point the flattening maps to them, so the result lies on
+// the input surface; smoothing (SmoothingOptions) then evens out the quads, staying on it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bimdf/mesh.hpp"
+#include "bimdf/quant/layout.hpp"
+#include "bimdf/quant/pattern.hpp"
+
+namespace bimdf::quant {
+
+struct ChartTiling {
+  PatternKind kind = PatternKind::Regular;
+  int cuts = 0;
+  int quads = 0;
+  int singularities = 0;  // interior pattern vertices of valence ≠ 4
+};
+
+// Where a quad mesh vertex comes from: exactly one of the three is ≥ 0.
+struct VertexOrigin {
+  int mesh_vertex = -1;  // a subside endpoint: this layout mesh vertex (corner or T-junction)
+  int subside = -1;      // a point inside this subside
+  int chart = -1;        // a pattern vertex inside this chart
+};
+
+struct Tessellation {
+  QuadMesh mesh;                     // quad_patch = chart id
+  std::vector<VertexOrigin> origin;  // per quad mesh vertex
+  std::vector<ChartTiling> charts;   // by chart id; empty charts get 0 quads
+  double time_patterns_s = 0;        // building the patterns
+  double time_mapping_s = 0;         // flattening charts and placing vertices
+  double time_smoothing_s = 0;
+};
+
+// Smoothing after stitching (note §4.2): `iterations` rounds in which every free vertex moves
+// `damping` of the way to the mean of its neighbours and is projected back onto the closest
+// point of the input surface among the triangles of its chart(s). Vertices on subsides along
+// the mesh border or along feature edges (NAME.feature), those subsides' ends, and feature
+// corners (NAME.c_feature) stay: feature curves and corners keep their place. 0 iterations:
+// no smoothing.
+struct SmoothingOptions {
+  int iterations = 30;
+  double damping = 0.5;
+};
+
+// Tessellates `layout` with subside lengths `lengths` (one per subside, as quantize returns).
+// Throws std::invalid_argument naming the subside or chart if a length is < 1, the count is
+// wrong, or a chart's perimeter is odd or < 4.
+Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& lengths,
+                        const SmoothingOptions& smoothing = {});
+
+// The smoothing step alone, on a tessellation of `layout` (called by tessellate).
+void smooth_on_surface(const Layout& layout, Tessellation& tessellation,
+                       const SmoothingOptions& options);
+
+}  // namespace bimdf::quant

@@ -1,0 +1,52 @@
+// Flattening one chart of a layout onto its pattern polygon, and finding points in the result
+// (../shared/reference/quadwild_modeling.md §4.1 step 4).
+//
+// The chart's boundary is pinned to the regular k-gon of its pattern (quant/pattern.hpp): each
+// subside covers its quantized share of its side, its mesh vertices placed by arc length, so
+// that subside endpoints land exactly on the pattern's boundary vertices. Interior vertices get
+// mean-value coordinates (Floater 2003): positive weights, so the map of a chart onto a convex
+// polygon is one-to-one and every pattern vertex falls in exactly one triangle.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "bimdf/quant/layout.hpp"
+
+namespace bimdf::quant::detail {
+
+struct ChartParametrization {
+  std::vector<int> mesh_vertex;               // local vertex → mesh vertex id
+  std::vector<std::array<double, 2>> uv;      // local vertex → position in the k-gon
+  std::vector<std::array<int, 3>> triangles;  // local vertex ids
+};
+
+// The chart's corner j in its pattern's k-gon: angle π/2 + 2πj/k on the unit circle.
+std::array<double, 2> pattern_corner(int j, int k);
+
+// Flattens chart `c` given every subside's quantized length.
+ChartParametrization parametrize_chart(const Layout& layout, int c,
+                                       const std::vector<int64_t>& lengths);
+
+// A point of the chart, as a mesh triangle and barycentric coordinates.
+struct SurfacePoint {
+  int triangle = -1;  // index into ChartParametrization::triangles
+  std::array<double, 3> barycentric{};
+};
+
+// Point location in a parametrization (a uniform grid of triangle bounding boxes). Points that
+// fall outside every triangle by rounding get the nearest triangle with clamped coordinates.
+class UvLocator {
+ public:
+  explicit UvLocator(const ChartParametrization& param);
+  SurfacePoint locate(const std::array<double, 2>& p) const;
+
+ private:
+  const ChartParametrization& param_;
+  double x0_ = 0, y0_ = 0, cell_ = 1;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::vector<int>> cells_;
+};
+
+}  // namespace bimdf::quant::detail

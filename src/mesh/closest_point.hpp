@@ -1,0 +1,46 @@
+// Closest points on a triangle mesh: a bounding-volume hierarchy over its triangles, queried by
+// branch and bound. Used to measure distances to the input surface and to project onto it.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "bimdf/mesh.hpp"
+
+namespace bimdf::detail {
+
+using Vec3 = std::array<double, 3>;
+
+// The point of triangle (a, b, c) closest to p (by Voronoi regions of its vertices and edges).
+Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+class TriangleTree {
+ public:
+  // Keeps a reference to `mesh`, which must outlive the tree. With `faces`, only those
+  // triangles are searched.
+  explicit TriangleTree(const TriangleMesh& mesh);
+  TriangleTree(const TriangleMesh& mesh, std::vector<int> faces);
+
+  struct Hit {
+    int face = -1;
+    Vec3 point{};
+    double distance = 0;
+  };
+  // The closest point of the mesh to p (face −1 for an empty mesh).
+  Hit closest(const Vec3& p) const;
+
+ private:
+  struct Node {
+    Vec3 lo, hi;
+    int first = 0, count = 0;  // leaf: faces order_[first, first + count)
+    int left = -1, right = -1;
+  };
+  int build(int first, int count, std::vector<Vec3>& centroid);
+  void search(int node, const Vec3& p, Hit& best) const;
+
+  const TriangleMesh& mesh_;
+  std::vector<int> order_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace bimdf::detail

@@ -1,0 +1,219 @@
+#include "bimdf/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <utility>
+
+#include "mesh/closest_point.hpp"
+
+namespace bimdf {
+
+int QuadMeshMetrics::singular_vertices() const {
+  int n = 0;
+  for (const auto& [valence, count] : interior_singularities) n += count;
+  for (const auto& [valence, count] : boundary_singularities) n += count;
+  return n;
+}
+
+namespace {
+
+using detail::Vec3;
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+// Newell's normal of a polygon (not normalized): robust for non-planar quads.
+Vec3 newell_normal(const QuadMesh& mesh, const std::array<int, 4>& q) {
+  Vec3 n{0, 0, 0};
+  for (int a = 0; a < 4; ++a) {
+    const Vec3& u = mesh.vertices[q[a]];
+    const Vec3& v = mesh.vertices[q[(a + 1) % 4]];
+    n[0] += (u[1] - v[1]) * (u[2] + v[2]);
+    n[1] += (u[2] - v[2]) * (u[0] + v[0]);
+    n[2] += (u[0] - v[0]) * (u[1] + v[1]);
+  }
+  return n;
+}
+
+double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& q) {
+  const Vec3 n = newell_normal(mesh, q);
+  const double nn = norm(n);
+  if (nn == 0) return 0;
+  double worst = 1;
+  for (int a = 0; a < 4; ++a) {
+    const Vec3& c = mesh.vertices[q[a]];
+    const Vec3 e1 = sub(mesh.vertices[q[(a + 1) % 4]], c);
+    const Vec3 e2 = sub(mesh.vertices[q[(a + 3) % 4]], c);
+    const double l = norm(e1) * norm(e2);
+    worst = std::min(worst, l > 0 ? dot(cross(e1, e2), n) / (l * nn) : 0.0);
+  }
+  return worst;
+}
+
+using Edge = std::pair<int, int>;
+Edge undirected(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
+
+}  // namespace
+
+QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* reference) {
+  QuadMeshMetrics m;
+  const int nv = mesh.num_vertices(), nf = mesh.num_quads();
+  m.faces = nf;
+  // Edges with their quads and directions.
+  std::map<Edge, std::vector<std::pair<int, bool>>> edges;  // edge → (quad, walks a → b)
+  for (int f = 0; f < nf; ++f)
+    for (int a = 0; a < 4; ++a) {
+      const int u = mesh.quads[f][a], v = mesh.quads[f][(a + 1) % 4];
+      edges[undirected(u, v)].push_back({f, u < v});
+    }
+  m.edges = static_cast<int>(edges.size());
+  std::vector<std::vector<int>> neighbours(nv);
+  std::vector<char> on_boundary(nv, 0), used(nv, 0);
+  for (const auto& [e, quads] : edges) {
+    neighbours[e.first].push_back(e.second);
+    neighbours[e.second].push_back(e.first);
+    used[e.first] = used[e.second] = 1;
+    if (quads.size() == 1) {
+      ++m.boundary_edges;
+      on_boundary[e.first] = on_boundary[e.second] = 1;
+    } else if (quads.size() > 2 || quads[0].second == quads[1].second) {
+      ++m.non_manifold_edges;
+    }
+  }
+  int used_vertices = 0;
+  for (char u : used) used_vertices += u;
+  m.vertices = used_vertices;
+  m.euler_characteristic = used_vertices - m.edges + nf;
+
+  // Fans: quads around a vertex connected through the edges at that vertex.
+  std::vector<std::vector<int>> vertex_quads(nv);
+  for (int f = 0; f < nf; ++f)
+    for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
+  for (int v = 0; v < nv; ++v) {
+    if (vertex_quads[v].empty()) continue;
+    std::set<int> seen{vertex_quads[v][0]};
+    std::vector<int> stack{vertex_quads[v][0]};
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int a = 0; a < 4; ++a) {
+        if (mesh.quads[f][a] != v) continue;
+        for (int w : {mesh.quads[f][(a + 1) % 4], mesh.quads[f][(a + 3) % 4]})
+          for (const auto& [g, dir] : edges[undirected(v, w)])
+            if (seen.insert(g).second) stack.push_back(g);
+      }
+    }
+    if (seen.size() != vertex_quads[v].size()) ++m.non_manifold_vertices;
+  }
+
+  std::vector<char> singular(nv, 0);
+  for (int v = 0; v < nv; ++v) {
+    if (!used[v]) continue;
+    const int valence = static_cast<int>(neighbours[v].size());
+    if (on_boundary[v] && valence != 3) ++m.boundary_singularities[valence], singular[v] = 1;
+    if (!on_boundary[v] && valence != 4) ++m.interior_singularities[valence], singular[v] = 1;
+  }
+
+  // Scaled Jacobians.
+  std::vector<double> sj(nf);
+  double sum = 0;
+  for (int f = 0; f < nf; ++f) {
+    sj[f] = scaled_jacobian(mesh, mesh.quads[f]);
+    sum += sj[f];
+    m.inverted += sj[f] < 0;
+  }
+  if (nf > 0) {
+    m.scaled_jacobian_mean = sum / nf;
+    std::vector<double> sorted = sj;
+    std::sort(sorted.begin(), sorted.end());
+    m.scaled_jacobian_min = sorted.front();
+    m.scaled_jacobian_p5 = sorted[static_cast<size_t>(0.05 * (nf - 1))];
+  }
+
+  // Base complex: trace separatrices straight through regular interior vertices.
+  std::set<Edge> cut;
+  for (const auto& [e, quads] : edges)
+    if (quads.size() != 2) cut.insert(e);
+  const auto quad_neighbours_of = [&](int w, int f) {  // w's two neighbours in quad f
+    for (int a = 0; a < 4; ++a)
+      if (mesh.quads[f][a] == w)
+        return Edge{mesh.quads[f][(a + 1) % 4], mesh.quads[f][(a + 3) % 4]};
+    return Edge{-1, -1};
+  };
+  for (int s = 0; s < nv; ++s) {
+    if (!singular[s]) continue;
+    for (int first : neighbours[s]) {
+      int from = s, to = first;
+      while (cut.insert(undirected(from, to)).second) {
+        if (singular[to] || on_boundary[to] || neighbours[to].size() != 4) break;
+        // The edge at `to` opposite (from, to): not in either quad beside (from, to).
+        std::set<int> beside{from};
+        for (const auto& [g, dir] : edges[undirected(from, to)]) {
+          const Edge n = quad_neighbours_of(to, g);
+          beside.insert(n.first), beside.insert(n.second);
+        }
+        int next = -1;
+        for (int w : neighbours[to])
+          if (!beside.count(w)) next = w;
+        if (next < 0) break;
+        from = to, to = next;
+      }
+    }
+  }
+  std::vector<int> patch(nf, -1);
+  for (int f = 0; f < nf; ++f) {
+    if (patch[f] >= 0) continue;
+    patch[f] = m.base_complex_faces++;
+    std::vector<int> stack{f};
+    while (!stack.empty()) {
+      const int g = stack.back();
+      stack.pop_back();
+      for (int a = 0; a < 4; ++a) {
+        const Edge e = undirected(mesh.quads[g][a], mesh.quads[g][(a + 1) % 4]);
+        if (cut.count(e)) continue;
+        for (const auto& [h, dir] : edges[e])
+          if (patch[h] < 0) patch[h] = patch[f], stack.push_back(h);
+      }
+    }
+  }
+
+  if (reference && reference->num_faces() > 0) {
+    const detail::TriangleTree tree(*reference);
+    Vec3 lo = reference->vertices[0], hi = lo;
+    for (const Vec3& p : reference->vertices)
+      for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], p[d]), hi[d] = std::max(hi[d], p[d]);
+    m.hausdorff = 0;
+    const auto sample = [&](const Vec3& p) {
+      m.hausdorff = std::max(m.hausdorff, tree.closest(p).distance);
+    };
+    for (int v = 0; v < nv; ++v)
+      if (used[v]) sample(mesh.vertices[v]);
+    for (const auto& [e, quads] : edges) {
+      const Vec3& a = mesh.vertices[e.first];
+      const Vec3& b = mesh.vertices[e.second];
+      sample({(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2});
+    }
+    for (const auto& q : mesh.quads) {
+      Vec3 c{0, 0, 0};
+      for (int v : q)
+        for (int d = 0; d < 3; ++d) c[d] += mesh.vertices[v][d] / 4;
+      sample(c);
+      const detail::TriangleTree::Hit hit = tree.closest(c);
+      const auto& t = reference->faces[hit.face];
+      const Vec3 normal = cross(sub(reference->vertices[t[1]], reference->vertices[t[0]]),
+                                sub(reference->vertices[t[2]], reference->vertices[t[0]]));
+      m.flipped += dot(normal, newell_normal(mesh, q)) < 0;
+    }
+    const double diagonal = norm(sub(hi, lo));
+    m.hausdorff_relative = diagonal > 0 ? m.hausdorff / diagonal : 0;
+  }
+  return m;
+}
+
+}  // namespace bimdf
