@@ -10,6 +10,7 @@ packages=(
   googletest libgtest-dev          # unit and property tests
   coinor-libcbc-dev                # MILP oracle in tests and the baseline in benchmarks
   libeigen3-dev                    # linear algebra for the geometry stages
+  zlib1g-dev                       # PNG compression (bimdf render)
   clang libclang-rt-14-dev         # libFuzzer harnesses in CI
 )
 

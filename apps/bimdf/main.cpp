@@ -20,6 +20,7 @@
 #include "output.hpp"
 #include "quantize_command.hpp"
 #include "remesh_command.hpp"
+#include "render_command.hpp"
 #include "solve_command.hpp"
 
 namespace {
@@ -276,6 +277,8 @@ int main(int argc, char** argv) {
   CLI::App* tessellate = add_tessellate_command(app, tessellate_options);
   MetricsCommandOptions metrics_options;
   CLI::App* metrics = add_metrics_command(app, metrics_options);
+  RenderCommandOptions render_options;
+  CLI::App* render = add_render_command(app, render_options);
 
   try {
     app.parse(argc, argv);
@@ -293,6 +296,7 @@ int main(int argc, char** argv) {
     if (*remesh) return run_remesh(remesh_options);
     if (*tessellate) return run_tessellate(tessellate_options);
     if (*metrics) return run_metrics(metrics_options);
+    if (*render) return run_render(render_options);
     if (*generate) return run_generate(family, size, seed, generate_out, generate_format);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -23,6 +23,14 @@ void add_mesh_output(CLI::App* cmd, RemeshCommandOptions& o) {
   cmd->add_flag("--json", o.quantize.out.json, "Print the report as JSON on stdout");
   cmd->add_option("--report", o.quantize.out.file, "Also write the report JSON to this file");
   cmd->add_flag("-v,--verbose", o.verbose, "Per-chart pattern details");
+  cmd->add_option("--smooth-iterations", o.smoothing.iterations,
+                  "Smoothing rounds on the surface after stitching (0: none)")
+      ->default_val(30)
+      ->check(CLI::Range(0, 100000));
+  cmd->add_option("--smooth-damping", o.smoothing.damping,
+                  "How far each round moves a vertex towards its smoothed position")
+      ->default_val(0.5)
+      ->check(CLI::Range(0.0, 1.0));
 }
 
 // Subside lengths from a `bimdf quantize` JSON.
@@ -85,7 +93,10 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
            {"fan", kinds[quant::PatternKind::Fan]}}},
          {"pattern_singularities", singular},
          {"charts", per_chart},
-         {"time", {{"patterns_s", t.time_patterns_s}, {"mapping_s", t.time_mapping_s}}}};
+         {"time",
+          {{"patterns_s", t.time_patterns_s},
+           {"mapping_s", t.time_mapping_s},
+           {"smoothing_s", t.time_smoothing_s}}}};
   std::ostringstream s;
   s << "quad mesh     " << out << ": " << t.mesh.num_quads() << " quads, " << t.mesh.num_vertices()
     << " vertices\n";
@@ -231,7 +242,7 @@ int run_remesh(const RemeshCommandOptions& o) {
   const quant::Quantization q = quant::quantize(layout, effective_quantize_options(o.quantize));
   write_quantization_model(q, o.quantize);
   const double quantized_s = seconds_since(start);
-  const quant::Tessellation t = quant::tessellate(layout, q.lengths());
+  const quant::Tessellation t = quant::tessellate(layout, q.lengths(), o.smoothing);
   write_mesh(t, o, {o.quantize.layout});
   const QuantizationReport qr = report_quantization(layout, q, o.quantize, read_s, quantized_s);
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
@@ -252,7 +263,7 @@ int run_tessellate(const RemeshCommandOptions& o) {
   const std::vector<int64_t> lengths = read_quantization(o.quantization, layout);
   quant::Tessellation t;
   try {
-    t = quant::tessellate(layout, lengths);
+    t = quant::tessellate(layout, lengths, o.smoothing);
   } catch (const std::invalid_argument& e) {
     throw InputError(o.quantization, "/subside_lengths", e.what());
   }

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "bimdf/quant/tessellate.hpp"
 #include "quantize_command.hpp"
 
 namespace bimdf::cli {
@@ -13,6 +14,7 @@ struct RemeshCommandOptions {
   QuantizeCommandOptions quantize;  // layout, quantization options, --json / report file
   std::string quantization;         // tessellate: the QUANT.json of `bimdf quantize`
   std::string mesh_out;             // -o OUT.obj
+  quant::SmoothingOptions smoothing;
   bool verbose = false;
 };
 

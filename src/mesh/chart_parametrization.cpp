@@ -10,6 +10,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "bimdf/quant/pattern.hpp"
+
 namespace bimdf::quant::detail {
 namespace {
 
@@ -28,11 +30,6 @@ double tan_half_angle(const Vec3& u, const Vec3& v) {
 
 }  // namespace
 
-std::array<double, 2> pattern_corner(int j, int k) {
-  const double angle = std::numbers::pi / 2 + 2 * std::numbers::pi * j / k;
-  return {std::cos(angle), std::sin(angle)};
-}
-
 ChartParametrization parametrize_chart(const Layout& layout, int c,
                                        const std::vector<int64_t>& lengths) {
   const Chart& chart = layout.charts[c];
@@ -45,13 +42,17 @@ ChartParametrization parametrize_chart(const Layout& layout, int c,
     if (inserted) param.mesh_vertex.push_back(v);
     return it->second;
   };
-  // Boundary first, in walking order, pinned to the k-gon.
+  // Boundary first, in walking order, pinned to the pattern's polygon.
+  std::vector<int> sides(k, 0);
+  for (int j = 0; j < k; ++j)
+    for (int s : chart.sides[j].subsides) sides[j] += static_cast<int>(lengths[s]);
+  const std::vector<std::array<double, 2>> corner = pattern_polygon(sides);
   std::vector<std::array<double, 2>> pinned;
   for (int j = 0; j < k; ++j) {
     const Side& side = chart.sides[j];
     int64_t side_length = 0;
     for (int s : side.subsides) side_length += lengths[s];
-    const auto p = pattern_corner(j, k), q = pattern_corner(j + 1, k);
+    const auto &p = corner[j], &q = corner[(j + 1) % k];
     int64_t offset = 0;
     for (size_t i = 0; i < side.subsides.size(); ++i) {
       const Subside& sub = layout.subsides[side.subsides[i]];

@@ -1,7 +1,7 @@
 // Flattening one chart of a layout onto its pattern polygon, and finding points in the result
 // (../shared/reference/quadwild_modeling.md §4.1 step 4).
 //
-// The chart's boundary is pinned to the regular k-gon of its pattern (quant/pattern.hpp): each
+// The chart's boundary is pinned to the polygon of its pattern (quant/pattern.hpp): each
 // subside covers its quantized share of its side, its mesh vertices placed by arc length, so
 // that subside endpoints land exactly on the pattern's boundary vertices. Interior vertices get
 // mean-value coordinates (Floater 2003): positive weights, so the map of a chart onto a convex
@@ -21,9 +21,6 @@ struct ChartParametrization {
   std::vector<std::array<double, 2>> uv;      // local vertex → position in the k-gon
   std::vector<std::array<int, 3>> triangles;  // local vertex ids
 };
-
-// The chart's corner j in its pattern's k-gon: angle π/2 + 2πj/k on the unit circle.
-std::array<double, 2> pattern_corner(int j, int k);
 
 // Flattens chart `c` given every subside's quantized length.
 ChartParametrization parametrize_chart(const Layout& layout, int c,

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "mesh/closest_point.hpp"
+#include "mesh/quad_quality.hpp"
 
 namespace bimdf {
 
@@ -27,34 +28,6 @@ Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-
-// Newell's normal of a polygon (not normalized): robust for non-planar quads.
-Vec3 newell_normal(const QuadMesh& mesh, const std::array<int, 4>& q) {
-  Vec3 n{0, 0, 0};
-  for (int a = 0; a < 4; ++a) {
-    const Vec3& u = mesh.vertices[q[a]];
-    const Vec3& v = mesh.vertices[q[(a + 1) % 4]];
-    n[0] += (u[1] - v[1]) * (u[2] + v[2]);
-    n[1] += (u[2] - v[2]) * (u[0] + v[0]);
-    n[2] += (u[0] - v[0]) * (u[1] + v[1]);
-  }
-  return n;
-}
-
-double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& q) {
-  const Vec3 n = newell_normal(mesh, q);
-  const double nn = norm(n);
-  if (nn == 0) return 0;
-  double worst = 1;
-  for (int a = 0; a < 4; ++a) {
-    const Vec3& c = mesh.vertices[q[a]];
-    const Vec3 e1 = sub(mesh.vertices[q[(a + 1) % 4]], c);
-    const Vec3 e2 = sub(mesh.vertices[q[(a + 3) % 4]], c);
-    const double l = norm(e1) * norm(e2);
-    worst = std::min(worst, l > 0 ? dot(cross(e1, e2), n) / (l * nn) : 0.0);
-  }
-  return worst;
-}
 
 using Edge = std::pair<int, int>;
 Edge undirected(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
@@ -124,7 +97,7 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
   std::vector<double> sj(nf);
   double sum = 0;
   for (int f = 0; f < nf; ++f) {
-    sj[f] = scaled_jacobian(mesh, mesh.quads[f]);
+    sj[f] = detail::scaled_jacobian(mesh, mesh.quads[f]);
     sum += sj[f];
     m.inverted += sj[f] < 0;
   }
@@ -208,7 +181,7 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
       const auto& t = reference->faces[hit.face];
       const Vec3 normal = cross(sub(reference->vertices[t[1]], reference->vertices[t[0]]),
                                 sub(reference->vertices[t[2]], reference->vertices[t[0]]));
-      m.flipped += dot(normal, newell_normal(mesh, q)) < 0;
+      m.flipped += dot(normal, detail::newell_normal(mesh, q)) < 0;
     }
     const double diagonal = norm(sub(hi, lo));
     m.hausdorff_relative = diagonal > 0 ? m.hausdorff / diagonal : 0;

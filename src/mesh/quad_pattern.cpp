@@ -31,6 +31,54 @@ std::string to_string(PatternKind kind) {
   return "?";
 }
 
+std::vector<std::array<double, 2>> pattern_polygon(const std::vector<int>& sides) {
+  const int k = static_cast<int>(sides.size());
+  std::vector<double> l(sides.begin(), sides.end());
+  const auto longest = [&] {
+    return static_cast<int>(std::max_element(l.begin(), l.end()) - l.begin());
+  };
+  double sum = 0;
+  for (double x : l) sum += x;
+  // A cyclic polygon needs its longest side shorter than the others together; keep a margin
+  // (a needle-thin domain helps nobody) by blending towards equal sides.
+  while (2 * l[longest()] > 0.9 * sum) {
+    for (double& x : l) x = 0.5 * (x + sum / k);
+  }
+  const int m = longest();
+  const double big = l[m];
+  const auto angle = [](double side, double radius) {
+    return 2 * std::asin(std::min(1.0, side / (2 * radius)));
+  };
+  // Central angles: with the centre inside, all sides' angles add up to 2π; with the centre
+  // outside (the longest side subtends more than π), the others add up to the longest's.
+  double others_at_half = 0;
+  for (int j = 0; j < k; ++j)
+    if (j != m) others_at_half += angle(l[j], big / 2);
+  const bool centre_inside = others_at_half >= std::numbers::pi;
+  const auto excess = [&](double radius) {
+    double total = 0;
+    for (int j = 0; j < k; ++j)
+      if (j != m) total += angle(l[j], radius);
+    return centre_inside ? total + angle(big, radius) - 2 * std::numbers::pi
+                         : total - angle(big, radius);
+  };
+  // excess falls with the radius when the centre is inside and rises when it is outside.
+  double lo = big / 2, hi = sum;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double mid = 0.5 * (lo + hi);
+    ((excess(mid) > 0) == centre_inside ? lo : hi) = mid;
+  }
+  const double radius = 0.5 * (lo + hi);
+  std::vector<std::array<double, 2>> corners(k);
+  double phi = std::numbers::pi / 2;
+  for (int j = 0; j < k; ++j) {
+    corners[j] = {radius * std::cos(phi), radius * std::sin(phi)};
+    phi +=
+        j == m && !centre_inside ? -angle(big, radius) + 2 * std::numbers::pi : angle(l[j], radius);
+  }
+  return corners;
+}
+
 int QuadPattern::perimeter() const {
   int p = 0;
   for (int l : sides) p += l;
@@ -219,11 +267,14 @@ class PatternBuilder {
       perimeter_ += sides[j];
     }
     for (int v = 0; v < perimeter_; ++v) root_.ring.push_back(v);
-    std::vector<Point> corner(k);
+    const std::vector<Point> corner = pattern_polygon(sides);
+    double length = 0;
     for (int j = 0; j < k; ++j) {
-      const double angle = std::numbers::pi / 2 + 2 * std::numbers::pi * j / k;
-      corner[j] = {std::cos(angle), std::sin(angle)};
+      const Point& p = corner[j];
+      const Point& q = corner[(j + 1) % k];
+      length += std::hypot(q[0] - p[0], q[1] - p[1]);
     }
+    edge_length_ = length / perimeter_;
     for (int j = 0; j < k; ++j) {
       const Point& p = corner[j];
       const Point& q = corner[(j + 1) % k];
@@ -232,7 +283,6 @@ class PatternBuilder {
         boundary_.push_back({p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])});
       }
     }
-    edge_length_ = 2 * k * std::sin(std::numbers::pi / k) / perimeter_;
   }
 
   QuadPattern build() {

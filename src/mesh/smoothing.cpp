@@ -1,14 +1,43 @@
 // smooth_on_surface (quant/tessellate.hpp): damped umbrella smoothing with projection onto the
 // input surface. Each free vertex is projected onto the triangles of the chart(s) it belongs
 // to rather than onto the whole surface, so that on thin parts it cannot jump to the far side.
+#include <algorithm>
 #include <memory>
 #include <set>
 #include <utility>
 
 #include "bimdf/quant/tessellate.hpp"
 #include "mesh/closest_point.hpp"
+#include "mesh/quad_quality.hpp"
 
 namespace bimdf::quant {
+namespace {
+
+// Quads at least this good (scaled Jacobian) may get worse while smoothing, down to this.
+constexpr double kGoodEnough = 0.5;
+
+// The point of a mesh polyline closest to p (face −1).
+detail::TriangleTree::Hit closest_on_polyline(const Layout& layout, const std::vector<int>& chain,
+                                              const std::array<double, 3>& p) {
+  detail::TriangleTree::Hit best;
+  best.distance = -1;
+  for (size_t i = 0; i + 1 < chain.size(); ++i) {
+    const auto& a = layout.mesh.vertices[chain[i]];
+    const auto& b = layout.mesh.vertices[chain[i + 1]];
+    double ab2 = 0, t = 0;
+    for (int d = 0; d < 3; ++d)
+      ab2 += (b[d] - a[d]) * (b[d] - a[d]), t += (p[d] - a[d]) * (b[d] - a[d]);
+    t = ab2 > 0 ? std::clamp(t / ab2, 0.0, 1.0) : 0.0;
+    std::array<double, 3> q;
+    double d2 = 0;
+    for (int d = 0; d < 3; ++d)
+      q[d] = a[d] + t * (b[d] - a[d]), d2 += (q[d] - p[d]) * (q[d] - p[d]);
+    if (best.distance < 0 || d2 < best.distance) best = {-1, q, d2};
+  }
+  return best;
+}
+
+}  // namespace
 
 void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOptions& options) {
   if (options.iterations <= 0) return;
@@ -38,10 +67,13 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
   for (int f = 0; f < layout.mesh.num_faces(); ++f)
     for (int v : layout.mesh.faces[f])
       if (layout.face_chart[f] >= 0) charts_at[v].insert(layout.face_chart[f]);
-  // The charts each vertex may move on (empty: fixed).
+  // The charts each vertex may move on (empty: fixed or on a curve); the feature or border
+  // subside a vertex slides along (−1: none).
   std::vector<std::vector<int>> charts(nv);
+  std::vector<int> curve(nv, -1);
   for (int v = 0; v < nv; ++v) {
     const VertexOrigin& o = t.origin[v];
+    if (o.subside >= 0 && !subside_free[o.subside]) curve[v] = o.subside;
     if (o.chart >= 0) charts[v] = {o.chart};
     if (o.subside >= 0 && subside_free[o.subside]) {
       const Subside& s = layout.subsides[o.subside];
@@ -54,6 +86,10 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
   for (size_t c = 0; c < layout.charts.size(); ++c)
     if (!layout.charts[c].empty())
       tree[c] = std::make_unique<detail::TriangleTree>(layout.mesh, layout.charts[c].faces);
+  std::vector<std::vector<std::array<int, 3>>> corners(nv);  // (next, opposite, previous)
+  for (const auto& q : mesh.quads)
+    for (int a = 0; a < 4; ++a)
+      corners[q[a]].push_back({q[(a + 1) % 4], q[(a + 2) % 4], q[(a + 3) % 4]});
   std::vector<std::vector<int>> neighbours(nv);
   for (const auto& q : mesh.quads)
     for (int a = 0; a < 4; ++a) {
@@ -62,27 +98,58 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
     }
   // Each edge was added once from each of its (at most two) quads: the mean is unaffected
   // for interior edges, and boundary vertices are fixed anyway.
-  std::vector<std::array<double, 3>> next = mesh.vertices;
+  std::vector<std::vector<int>> vertex_quads(nv);
+  for (int f = 0; f < mesh.num_quads(); ++f)
+    for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
+  // The worst scaled Jacobian among the quads at v.
+  const auto quality = [&](int v) {
+    double worst = 1;
+    for (int f : vertex_quads[v])
+      worst = std::min(worst, detail::scaled_jacobian(mesh, mesh.quads[f]));
+    return worst;
+  };
   for (int iteration = 0; iteration < options.iterations; ++iteration) {
     for (int v = 0; v < nv; ++v) {
-      if (charts[v].empty() || neighbours[v].empty()) continue;
+      if ((charts[v].empty() && curve[v] < 0) || neighbours[v].empty()) continue;
+      // Half the umbrella mean, half the mean of where each quad at v would put v if it were
+      // a parallelogram (the corner opposite v mirrored through the other two).
       std::array<double, 3> mean{0, 0, 0};
       for (int w : neighbours[v])
-        for (int d = 0; d < 3; ++d) mean[d] += mesh.vertices[w][d] / neighbours[v].size();
-      std::array<double, 3> p;
-      for (int d = 0; d < 3; ++d)
-        p[d] = (1 - options.damping) * mesh.vertices[v][d] + options.damping * mean[d];
-      detail::TriangleTree::Hit best;
-      best.distance = -1;
-      for (int c : charts[v]) {
-        if (!tree[c]) continue;
-        const detail::TriangleTree::Hit hit = tree[c]->closest(p);
-        if (best.distance < 0 || hit.distance < best.distance) best = hit;
+        for (int d = 0; d < 3; ++d) mean[d] += 0.5 * mesh.vertices[w][d] / neighbours[v].size();
+      for (const auto& [a, b, c] : corners[v])
+        for (int d = 0; d < 3; ++d)
+          mean[d] += 0.5 * (mesh.vertices[a][d] + mesh.vertices[c][d] - mesh.vertices[b][d]) /
+                     corners[v].size();
+      // Where v would go with a step of `damping` towards the mean, back on the surface.
+      const auto candidate = [&](double damping) {
+        std::array<double, 3> p;
+        for (int d = 0; d < 3; ++d) p[d] = (1 - damping) * mesh.vertices[v][d] + damping * mean[d];
+        detail::TriangleTree::Hit best;
+        best.distance = -1;
+        if (curve[v] >= 0)
+          best = closest_on_polyline(layout, layout.subsides[curve[v]].vertices, p);
+        for (int c : charts[v]) {
+          if (!tree[c]) continue;
+          const detail::TriangleTree::Hit hit = tree[c]->closest(p);
+          if (best.distance < 0 || hit.distance < best.distance) best = hit;
+        }
+        return best.distance >= 0 ? best.point : p;
+      };
+      // Moves in place, and only if the quads at v stay as good as they were or good enough:
+      // smoothing never creates an inverted quad and never worsens the worst one. Where the
+      // quads at v are bad, longer and shorter steps are tried too.
+      const double before = quality(v);
+      const std::array<double, 3> old = mesh.vertices[v];
+      std::array<double, 3> chosen = old;
+      double chosen_quality = -2;
+      for (double damping : {options.damping, 1.0, 0.25}) {
+        mesh.vertices[v] = candidate(damping);
+        const double q = quality(v);
+        if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
+        if (before >= kGoodEnough) break;
       }
-      next[v] = best.distance >= 0 ? best.point : p;
+      mesh.vertices[v] = chosen_quality >= std::min(before, kGoodEnough) ? chosen : old;
     }
-    mesh.vertices.swap(next);
-    next = mesh.vertices;
   }
 }
 

@@ -3,6 +3,7 @@
 // pattern, checked against the closed-form quad count and singularity.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -64,16 +65,18 @@ std::string check_pattern(const QuadPattern& p) {
         return "quad is not convex";
     }
   }
-  // Boundary vertices on the k-gon: corner j at angle π/2 + 2πj/k.
+  // Boundary vertices evenly spaced on the sides of pattern_polygon.
   const int k = static_cast<int>(p.sides.size());
-  int corner = 0;
-  for (int j = 0; j < k; ++j) {
-    const double angle = M_PI / 2 + 2 * M_PI * j / k;
-    if (std::abs(p.positions[corner][0] - std::cos(angle)) > 1e-12 ||
-        std::abs(p.positions[corner][1] - std::sin(angle)) > 1e-12)
-      return "corner " + std::to_string(j) + " is misplaced";
-    corner += p.sides[j];
-  }
+  const auto polygon = pattern_polygon(p.sides);
+  int v = 0;
+  for (int j = 0; j < k; ++j)
+    for (int t = 0; t < p.sides[j]; ++t, ++v) {
+      const auto &a = polygon[j], &b = polygon[(j + 1) % k];
+      const double f = double(t) / p.sides[j];
+      if (std::abs(p.positions[v][0] - (a[0] + f * (b[0] - a[0]))) > 1e-9 ||
+          std::abs(p.positions[v][1] - (a[1] + f * (b[1] - a[1]))) > 1e-9)
+        return "boundary vertex " + std::to_string(v) + " is misplaced";
+    }
   return "";
 }
 
@@ -106,6 +109,38 @@ TEST(QuadPattern, EverySmallSideVectorGetsAValidPattern) {
   EXPECT_EQ(kinds[PatternKind::Fan], 0);
   EXPECT_GT(kinds[PatternKind::Cut], 0);
   EXPECT_GT(kinds[PatternKind::Regular], 0);
+}
+
+TEST(QuadPattern, PolygonHasTheSideLengthsOnACircle) {
+  int exact = 0;
+  for (int k = 3; k <= 6; ++k)
+    for_each_side_vector(k, 7, [&](const std::vector<int>& l) {
+      const auto c = pattern_polygon(l);
+      ASSERT_EQ(static_cast<int>(c.size()), k);
+      int sum = 0, longest = 0;
+      for (int x : l) sum += x, longest = std::max(longest, x);
+      // Strictly convex and counter-clockwise.
+      for (int j = 0; j < k; ++j) {
+        const auto &a = c[j], &b = c[(j + 1) % k], &d = c[(j + 2) % k];
+        ASSERT_GT((b[0] - a[0]) * (d[1] - b[1]) - (b[1] - a[1]) * (d[0] - b[0]), 1e-9);
+      }
+      if (2 * longest > 0.9 * sum) return;  // blended towards equal sides
+      ++exact;
+      // Side lengths l_j, corners on one circle (the circumcentre of the first three).
+      const auto &p = c[0], &q = c[1], &r = c[2];
+      const double d = 2 * (p[0] * (q[1] - r[1]) + q[0] * (r[1] - p[1]) + r[0] * (p[1] - q[1]));
+      const double p2 = p[0] * p[0] + p[1] * p[1], q2 = q[0] * q[0] + q[1] * q[1],
+                   r2 = r[0] * r[0] + r[1] * r[1];
+      const double ux = (p2 * (q[1] - r[1]) + q2 * (r[1] - p[1]) + r2 * (p[1] - q[1])) / d;
+      const double uy = (p2 * (r[0] - q[0]) + q2 * (p[0] - r[0]) + r2 * (q[0] - p[0])) / d;
+      const double radius = std::hypot(p[0] - ux, p[1] - uy);
+      for (int j = 0; j < k; ++j) {
+        const auto &a = c[j], &b = c[(j + 1) % k];
+        EXPECT_NEAR(std::hypot(b[0] - a[0], b[1] - a[1]), l[j], 1e-9);
+        EXPECT_NEAR(std::hypot(a[0] - ux, a[1] - uy), radius, 1e-9);
+      }
+    });
+  EXPECT_GT(exact, 1000);
 }
 
 TEST(QuadPattern, RegularSideVectorsGetTheRegularPattern) {

@@ -29,13 +29,13 @@ enum class PatternKind {
 
 std::string to_string(PatternKind kind);
 
-// A quad pattern on the regular k-gon. Vertices 0…P−1 (P = Σ l_j) are the boundary in
+// A quad pattern on its pattern_polygon. Vertices 0…P−1 (P = Σ l_j) are the boundary in
 // counter-clockwise order: vertex Σ_{i<j} l_i is corner j and side j runs from corner j to
 // corner j+1. Interior vertices follow. Quads are counter-clockwise, like the boundary.
 struct QuadPattern {
   std::vector<int> sides;                        // l_j
   std::vector<std::array<int, 4>> quads;         // vertex ids
-  std::vector<std::array<double, 2>> positions;  // in the k-gon with unit circumradius
+  std::vector<std::array<double, 2>> positions;  // in pattern_polygon(sides)
   PatternKind kind = PatternKind::Regular;
   int cuts = 0;  // cut chains used (PatternKind::Cut)
 
@@ -43,12 +43,18 @@ struct QuadPattern {
   int perimeter() const;
 };
 
-// The pattern for `sides` (see above). Boundary vertices sit on the regular k-gon of unit
-// circumradius, corner j at angle π/2 + 2πj/k, evenly spaced along each side; interior
-// vertices at the average of their neighbours (Tutte's embedding, which keeps faces convex on
-// the convex polygon). Among the candidate patterns the first whose quads are all convex (no
-// corner turning clockwise) is taken; the fan is convex by construction. Throws
-// std::invalid_argument if k is outside 3…6, a side is < 1, or the perimeter is odd or < 4.
+// The convex polygon patterns are drawn in: corner j, counter-clockwise, corner 0 at the top.
+// Its sides have the lengths l_j (so quads come out near-square): it is the polygon with those
+// sides inscribed in a circle. When the longest side is not clearly shorter than the others
+// together (2 l_max > 0.9 Σ l), the lengths are first blended towards their mean until it is.
+std::vector<std::array<double, 2>> pattern_polygon(const std::vector<int>& sides);
+
+// The pattern for `sides` (see above). Boundary vertices sit on pattern_polygon(sides), evenly
+// spaced along each side; interior vertices at the average of their neighbours (Tutte's
+// embedding, which keeps faces convex on the convex polygon). Among the candidate patterns the
+// first whose quads are all convex (no corner turning clockwise) is taken; the fan is convex by
+// construction. Throws std::invalid_argument if k is outside 3…6, a side is < 1, or the perimeter
+// is odd or < 4.
 QuadPattern make_quad_pattern(const std::vector<int>& sides);
 
 // The regular pattern's strip counts e_j (l_j = e_{j−1} + e_{j+1}; for k = 4, e_0 = l_1 and
