@@ -223,6 +223,7 @@ CLI::App* add_metrics_command(CLI::App& app, MetricsCommandOptions& o) {
 
 int run_metrics(const MetricsCommandOptions& o) {
   const QuadMesh mesh = read_obj_quads(o.mesh);
+  if (mesh.quads.empty()) throw InputError(o.mesh, "", "no faces: expected an OBJ quad mesh");
   TriangleMesh reference;
   if (!o.reference.empty()) reference = read_obj_triangles(o.reference);
   const QuadMeshMetrics m = measure_quad_mesh(mesh, o.reference.empty() ? nullptr : &reference);

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "bimdf/error.hpp"
 #include "bimdf/mesh.hpp"
 #include "output.hpp"
 
@@ -41,6 +42,7 @@ int run_render(RenderCommandOptions o) {
   o.render.colour_patches = !o.no_patches;
   o.render.mark_singularities = !o.no_singularities;
   const QuadMesh mesh = read_obj_quads(o.mesh);
+  if (mesh.quads.empty()) throw InputError(o.mesh, "", "no faces: expected an OBJ quad mesh");
   const Image image = render_quad_mesh(mesh, o.render);
   write_output_file(o.picture, encode_png(image), {o.mesh});
   std::cout << "picture       " << o.picture << ": " << image.width << " x " << image.height

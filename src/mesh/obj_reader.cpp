@@ -56,7 +56,7 @@ void parse_obj(std::string_view text, const std::string& source,
     const std::string_view line = text.substr(pos, end - pos);
     pos = end + 1;
     ++line_number;
-    const std::string where = "line " + std::to_string(line_number);
+    const std::string where = std::to_string(line_number);
     const std::vector<std::string_view> w = words_of(line);
     if (w.empty() || w[0].front() == '#') continue;
     if (w[0] == "g") {

@@ -13,9 +13,9 @@ namespace bimdf::testing {
 
 struct BruteForceResult {
   bool feasible = false;
-  double optimum = 0;          // when feasible
-  std::vector<int64_t> flow;   // an optimal flow, when feasible
-  bool exhaustive = true;      // every bound was finite and inside the window
+  double optimum = 0;         // when feasible
+  std::vector<int64_t> flow;  // an optimal flow, when feasible
+  bool exhaustive = true;     // every bound was finite and inside the window
   int64_t flows_checked = 0;
 };
 

@@ -24,8 +24,9 @@ class CliFixture : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("bimdf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-            "_" + std::to_string(::getpid()));
+           ("bimdf_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -46,10 +47,11 @@ class CliFixture : public ::testing::Test {
   }
 
   CliRun run(const std::string& args) const {
-    const std::string cmd = std::string(BIMDF_CLI_PATH) + " " + args + " >" + path("stdout") +
-                            " 2>" + path("stderr");
+    const std::string cmd =
+        std::string(BIMDF_CLI_PATH) + " " + args + " >" + path("stdout") + " 2>" + path("stderr");
     const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")),
+            slurp(path("stderr"))};
   }
 
   fs::path dir_;

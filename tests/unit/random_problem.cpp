@@ -20,8 +20,8 @@ double random_double(std::mt19937_64& rng) {
 
 }  // namespace
 
-Cost random_cost(std::mt19937_64& rng, const RandomProblemOptions& o, int64_t lower,
-                 int64_t upper, int depth) {
+Cost random_cost(std::mt19937_64& rng, const RandomProblemOptions& o, int64_t lower, int64_t upper,
+                 int depth) {
   const bool ext = o.all_cost_kinds;
   const bool scale_ok = lower >= 0;
   for (;;) {

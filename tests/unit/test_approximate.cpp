@@ -46,7 +46,8 @@ void compare(const Problem& p, ApproximateSolver& solver, SuiteReport& report,
       const std::string path = std::get<std::string>(s.stats.at("approximation_path"));
       ++report.paths[path.empty() ? "no edges" : path.substr(0, path.find(" ("))];
       const FlowCheck check = check_flow(p, s.flow);
-      if (!check.feasible()) failure = "returned an infeasible flow";
+      if (!check.feasible())
+        failure = "returned an infeasible flow";
       else if (std::fabs(check.objective - s.objective) > 1e-9 * (1 + std::fabs(s.objective)))
         failure = "reported objective differs from the flow's";
       else if (!truth.feasible)
@@ -110,27 +111,26 @@ void expect_clean(const SuiteReport& r, const std::string& name) {
   std::cout << "[ suite    ] " << name << ": " << r.instances << " instances, " << r.feasible
             << " feasible, " << r.infeasible << " infeasible, " << r.failures << " failures, "
             << r.outside_window << " flows outside the oracle's window; relative error median "
-            << percentile(r.relative_errors, 0.5) << ", p95 "
-            << percentile(r.relative_errors, 0.95) << ", max "
-            << percentile(r.relative_errors, 1.0) << "\n";
+            << percentile(r.relative_errors, 0.5) << ", p95 " << percentile(r.relative_errors, 0.95)
+            << ", max " << percentile(r.relative_errors, 1.0) << "\n";
   for (const auto& [path, n] : r.paths) std::cout << "[ suite    ]   " << path << ": " << n << "\n";
 }
 
 TEST(ApproximateRandom, TenThousandTinyInstancesAgreeWithBruteForce) {
-  expect_clean(run_suite(1, 10000, ParityRepairMode::SpanningTreeTJoin,
-                         DoubleCoverMode::Asymmetric, 5),
-               "tjoin+asymmetric U=5");
+  expect_clean(
+      run_suite(1, 10000, ParityRepairMode::SpanningTreeTJoin, DoubleCoverMode::Asymmetric, 5),
+      "tjoin+asymmetric U=5");
 }
 
 TEST(ApproximateRandom, OtherStartingModesAgreeWithBruteForce) {
   expect_clean(run_suite(2, 2000, ParityRepairMode::RoundToEven, DoubleCoverMode::Asymmetric, 5),
                "round-to-even+asymmetric U=5");
-  expect_clean(run_suite(3, 2000, ParityRepairMode::SpanningTreeTJoin,
-                         DoubleCoverMode::Symmetric, 5),
-               "tjoin+symmetric U=5");
-  expect_clean(run_suite(4, 2000, ParityRepairMode::SpanningTreeTJoin,
-                         DoubleCoverMode::Asymmetric, 0),
-               "tjoin+asymmetric U=0");
+  expect_clean(
+      run_suite(3, 2000, ParityRepairMode::SpanningTreeTJoin, DoubleCoverMode::Symmetric, 5),
+      "tjoin+symmetric U=5");
+  expect_clean(
+      run_suite(4, 2000, ParityRepairMode::SpanningTreeTJoin, DoubleCoverMode::Asymmetric, 0),
+      "tjoin+asymmetric U=0");
 }
 
 // --- Targeted cases ------------------------------------------------------------------------
@@ -158,8 +158,7 @@ TEST(Approximate, HonoursNonZeroDemands) {
 
 TEST(Approximate, RespectsFiniteUpperBoundsAboveTheGuess) {
   // Target 7 but upper 4: the tail capacity must be u − g − D, not u − D.
-  const Problem p =
-      parse("2\n0 0\n3\n0 1 0 1 0 4 A 7 1\n1 0 0 1 0 inf Q 0 1\n0 0 0 0 0 inf 0\n");
+  const Problem p = parse("2\n0 0\n3\n0 1 0 1 0 4 A 7 1\n1 0 0 1 0 inf Q 0 1\n0 0 0 0 0 inf 0\n");
   const Solution s = solve_approx(p);
   ASSERT_EQ(s.status, SolveStatus::Feasible);
   EXPECT_TRUE(check_flow(p, s.flow).feasible());
@@ -168,7 +167,8 @@ TEST(Approximate, RespectsFiniteUpperBoundsAboveTheGuess) {
 
 TEST(Approximate, OneSignedNodesAreFeasible) {
   // Node 0 has only tails, node 1 only heads: the flow must leave 0 and enter 1 twice over.
-  const Problem p = parse("3\n-2 2 0\n3\n0 2 0 1 0 3 A 3 1\n2 1 0 1 0 3 A 0 1\n0 1 0 1 0 3 Q 2 1\n");
+  const Problem p =
+      parse("3\n-2 2 0\n3\n0 2 0 1 0 3 A 3 1\n2 1 0 1 0 3 A 0 1\n0 1 0 1 0 3 Q 2 1\n");
   const Solution s = solve_approx(p);
   ASSERT_EQ(s.status, SolveStatus::Feasible);
   EXPECT_TRUE(check_flow(p, s.flow).feasible());
@@ -207,7 +207,8 @@ TEST(Approximate, UnreachableDemandIsProvenInfeasibleByTheRelaxation) {
   const Problem p = parse("2\n-4 4\n2\n0 1 0 1 0 2 A 0 1\n0 0 0 0 0 inf 0\n");
   const Solution s = solve_approx(p);
   EXPECT_EQ(s.status, SolveStatus::Infeasible);
-  EXPECT_EQ(reason(s).rfind("relaxation: the LP relaxation of the component containing node 0", 0), 0u)
+  EXPECT_EQ(reason(s).rfind("relaxation: the LP relaxation of the component containing node 0", 0),
+            0u)
       << reason(s);
 }
 

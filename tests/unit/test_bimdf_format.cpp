@@ -51,7 +51,8 @@ TEST(BimdfFormat, ReadsDecimalLibsatsumaFile) {
 
 TEST(BimdfFormat, ReadsHexFloatsAsLibsatsumaWritesThem) {
   const Problem p = parse_bimdf(
-      "# libSatsuma BiMDF file\n2\n0\n0\n1\n0 1 1 0 0 2147483647 A 0x1.8p+1 0x1.978d4f2adda3ap-2\n");
+      "# libSatsuma BiMDF file\n2\n0\n0\n1\n0 1 1 0 0 2147483647 A 0x1.8p+1 "
+      "0x1.978d4f2adda3ap-2\n");
   EXPECT_EQ(p.cost[0].target(), 3.0);
   EXPECT_EQ(p.cost[0].weight(), 0x1.978d4f2adda3ap-2);
   EXPECT_EQ(p.upper[0], kInfinity);

@@ -22,10 +22,10 @@ TEST(Cost, EvaluatesEveryKind) {
   EXPECT_EQ(Cost::linear(-1.5)(4), -6.0);
   EXPECT_EQ(Cost::abs_deviation(2.5, 2)(0), 5.0);
   EXPECT_EQ(Cost::abs_deviation(2.5, 2)(4), 3.0);
-  EXPECT_EQ(Cost::asym_abs_deviation(3, 2, 5)(1), 4.0);   // below: 2·(3 − 1)
-  EXPECT_EQ(Cost::asym_abs_deviation(3, 2, 5)(4), 5.0);   // above: 5·(4 − 3)
+  EXPECT_EQ(Cost::asym_abs_deviation(3, 2, 5)(1), 4.0);  // below: 2·(3 − 1)
+  EXPECT_EQ(Cost::asym_abs_deviation(3, 2, 5)(4), 5.0);  // above: 5·(4 − 3)
   EXPECT_EQ(Cost::asym_abs_deviation(3, 2, 5)(3), 0.0);
-  EXPECT_EQ(Cost::quad_deviation(1.5, 4)(3), 9.0);        // 4·1.5²
+  EXPECT_EQ(Cost::quad_deviation(1.5, 4)(3), 9.0);  // 4·1.5²
   // Scale factor: w·max((x+ε)/(t+ε), (t+ε)/(x+ε)), +∞ at x ≤ −ε.
   const Cost s = Cost::scale_factor(3, 2, 1);
   EXPECT_DOUBLE_EQ(s(7), 2.0 * 8 / 4);
@@ -149,12 +149,14 @@ TEST(CostValidation, AcceptsEveryKindWithinLimits) {
 TEST(CostValidation, NegativeWeightIsNonConvex) {
   EXPECT_EQ(error_of(Cost::abs_deviation(1, -1)),
             "weight must be >= 0 (a negative weight makes the cost non-convex), got -1");
-  EXPECT_EQ(error_of(Cost::asym_abs_deviation(1, 1, -2)),
-            "weight_above must be >= 0 (a negative weight_above makes the cost non-convex), got -2");
+  EXPECT_EQ(
+      error_of(Cost::asym_abs_deviation(1, 1, -2)),
+      "weight_above must be >= 0 (a negative weight_above makes the cost non-convex), got -2");
 }
 
 TEST(CostValidation, NonFiniteNumbers) {
-  EXPECT_EQ(error_of(Cost::quad_deviation(std::nan(""), 1)), "target must be a finite number, got nan");
+  EXPECT_EQ(error_of(Cost::quad_deviation(std::nan(""), 1)),
+            "target must be a finite number, got nan");
   EXPECT_EQ(error_of(Cost::abs_deviation(1, kInf)), "weight must be a finite number, got inf");
   EXPECT_EQ(error_of(Cost::linear(-kInf)), "slope must be a finite number, got -inf");
   EXPECT_EQ(error_of(Cost::piecewise_linear(0, {1, std::nan("")})),
@@ -164,9 +166,11 @@ TEST(CostValidation, NonFiniteNumbers) {
 TEST(CostValidation, OverflowProneMagnitudes) {
   EXPECT_EQ(error_of(Cost::abs_deviation(1e13, 1)),
             "target must be within +-2^40 (the flow range), got 10000000000000");
-  EXPECT_EQ(error_of(Cost::quad_deviation(1, 1e16)), "weight must be <= 1e15, got 10000000000000000");
+  EXPECT_EQ(error_of(Cost::quad_deviation(1, 1e16)),
+            "weight must be <= 1e15, got 10000000000000000");
   EXPECT_EQ(error_of(Cost::linear(2e15)), "slope must be within +-1e15, got 2000000000000000");
-  EXPECT_EQ(error_of(Cost::zero(int64_t{1} << 41)), "guess must be within +-2^40, got 2199023255552");
+  EXPECT_EQ(error_of(Cost::zero(int64_t{1} << 41)),
+            "guess must be within +-2^40, got 2199023255552");
 }
 
 TEST(CostValidation, NonConvexPiecewise) {

@@ -1,12 +1,12 @@
 // Small helpers shared by the test files.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <functional>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "bimdf/error.hpp"
 

@@ -104,7 +104,8 @@ TEST(Problem, SumTermsAreCountedByKind) {
   Problem p;
   p.add_node();
   p.add_edge({0, true}, End{0, true}, 0, 3,
-             Cost::sum({Cost::abs_deviation(1, 1), Cost::sum({Cost::quad_deviation(1, 1), Cost::abs_deviation(2, 1)})}));
+             Cost::sum({Cost::abs_deviation(1, 1),
+                        Cost::sum({Cost::quad_deviation(1, 1), Cost::abs_deviation(2, 1)})}));
   const ProblemSummary s = summarize(p);
   EXPECT_EQ(s.cost_kinds[static_cast<int>(CostKind::Sum)], 1);
   EXPECT_EQ(s.cost_terms[static_cast<int>(CostKind::AbsDeviation)], 2);

@@ -19,73 +19,18 @@
 #include "bimdf/quant/quantize.hpp"
 #include "bimdf/solve.hpp"
 #include "cli_fixture.hpp"
+#include "shared_layouts.hpp"
 
 namespace bimdf::quant {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kLayouts = fs::path(BIMDF_SHARED_DATA_DIR) / "layouts";
 const fs::path kInstances = fs::path(BIMDF_SHARED_DATA_DIR) / "instances";
-
-// One row of ../shared/data/layouts/README.md's reference table.
-struct Reference {
-  std::string mesh;
-  int patches = 0;
-  double noalign_opt = 0, noalign_iso = 0, noalign_reg = 0;
-  double align_opt = 0, align_iso = 0, align_reg = 0, align_energy = 0;
-  int aligned = 0, pairs = 0;
-  int noalign_quads = 0, align_quads = 0;  // faces of the quad mesh the reference wrote
-};
-
-std::vector<Reference> references() {
-  std::vector<Reference> refs;
-  std::ifstream in(kLayouts / "README.md");
-  std::map<std::string, double> exact_noalign, exact_align;  // expected.tsv: more digits
-  std::ifstream tsv(kLayouts / "expected.tsv");
-  std::string line;
-  std::getline(tsv, line);
-  while (std::getline(tsv, line)) {
-    std::istringstream row(line);
-    std::string mesh;
-    int patches;
-    double a, b;
-    if (row >> mesh >> patches >> a >> b) exact_noalign[mesh] = a, exact_align[mesh] = b;
-  }
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::istringstream row(line);
-    for (std::string cell; std::getline(row, cell, '|');) {
-      cell.erase(0, cell.find_first_not_of(' '));
-      cell.erase(cell.find_last_not_of(' ') + 1);
-      cells.push_back(cell);
-    }
-    if (cells.size() < 14 || !exact_noalign.count(cells[1])) continue;
-    Reference r;
-    r.mesh = cells[1];
-    r.patches = std::stoi(cells[2]);
-    r.noalign_opt = exact_noalign[r.mesh];
-    r.noalign_iso = std::stod(cells[5]);
-    r.noalign_reg = std::stod(cells[6]);
-    r.align_opt = exact_align[r.mesh];
-    r.align_iso = std::stod(cells[9]);
-    r.align_reg = std::stod(cells[10]);
-    r.align_energy = std::stod(cells[11]);
-    std::sscanf(cells[12].c_str(), "%d/%d", &r.aligned, &r.pairs);
-    r.noalign_quads = std::stoi(cells[7]);
-    r.align_quads = std::stoi(cells[13]);
-    refs.push_back(r);
-  }
-  return refs;
-}
-
-std::string layout_path(const std::string& mesh) {
-  return (kLayouts / mesh / (mesh + ".obj")).string();
-}
-
-#define REQUIRE_SHARED_LAYOUTS()              \
-  if (!fs::exists(kLayouts / "expected.tsv")) \
-  GTEST_SKIP() << "shared layouts not found at " << kLayouts << " (a clone without ../shared)"
+using testing::kLayouts;
+using testing::layout_path;
+using testing::Reference;
+using testing::references;
 
 // 6 significant digits, as the reference table prints its energies.
 void expect_printed(double ours, double printed, const std::string& what) {

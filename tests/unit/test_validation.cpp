@@ -159,7 +159,8 @@ TEST(ValidationJson, Structure) {
   EXPECT_EQ(json_error(R"({"nodes": [], "edges": [], "egdes": []})"),
             "bad.json: /egdes: unknown key \"egdes\" (expected one of: format, version, nodes, "
             "edges, comment)");
-  EXPECT_EQ(json_error(R"({"nodes": []})"), "bad.json: /edges: missing: expected an array of edges");
+  EXPECT_EQ(json_error(R"({"nodes": []})"),
+            "bad.json: /edges: missing: expected an array of edges");
   EXPECT_EQ(json_error(json_edge(R"({"lower": 0})")),
             "bad.json: /edges/0/ends: missing: expected one or two ends");
   EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "up"]]})")),
@@ -183,39 +184,48 @@ TEST(ValidationJson, Numbers) {
             "bad.json: /nodes/0/demand: expected a demand (an integer), got 1.5");
   EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"]], "upper": "lots"})")),
             "bad.json: /edges/0/upper: expected an integer or \"inf\", got \"lots\"");
-  EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"]], "cost": {"kind": "abs", "target": "1", "weight": 1}})")),
+  EXPECT_EQ(json_error(json_edge(
+                R"({"ends": [[0, "head"]], "cost": {"kind": "abs", "target": "1", "weight": 1}})")),
             "bad.json: /edges/0/cost/target: expected target (a number), got \"1\"");
-  EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"]], "cost": {"kind": "abs", "target": 1e400, "weight": 1}})")),
-            "bad.json: invalid JSON: number overflow parsing '1e400'");
+  EXPECT_EQ(
+      json_error(json_edge(
+          R"({"ends": [[0, "head"]], "cost": {"kind": "abs", "target": 1e400, "weight": 1}})")),
+      "bad.json: invalid JSON: number overflow parsing '1e400'");
 }
 
 TEST(ValidationJson, Costs) {
   EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"]], "cost": {"kind": "cubic"}})")),
             "bad.json: /edges/0/cost/kind: unknown cost kind \"cubic\" (expected zero, linear, "
             "abs, asym_abs, quad, piecewise, scale_factor or sum)");
-  EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"]], "cost": {"kind": "abs", "target": 1, "wieght": 1}})")),
+  EXPECT_EQ(json_error(json_edge(
+                R"({"ends": [[0, "head"]], "cost": {"kind": "abs", "target": 1, "wieght": 1}})")),
             "bad.json: /edges/0/cost/wieght: unknown key \"wieght\" (expected one of: kind, "
             "target, weight)");
-  EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"]], "cost": {"kind": "quad", "target": 1}})")),
-            "bad.json: /edges/0/cost/weight: missing: a quad cost needs \"weight\"");
+  EXPECT_EQ(
+      json_error(json_edge(R"({"ends": [[0, "head"]], "cost": {"kind": "quad", "target": 1}})")),
+      "bad.json: /edges/0/cost/weight: missing: a quad cost needs \"weight\"");
   EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"]], "upper": 3,
       "cost": {"kind": "asym_abs", "target": 1, "weight_below": -1, "weight_above": 1}})")),
             "bad.json: /edges/0/cost: edge 0: weight_below must be >= 0 (a negative "
             "weight_below makes the cost non-convex), got -1");
-  EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"]], "cost": {"kind": "piecewise", "first": 0, "values": [0, 1, 1]}})")),
-            "bad.json: /edges/0/cost: edge 0: piecewise-linear cost is not convex at x = 1: "
-            "slope 1 before it, 0 after it (slopes must not decrease)");
+  EXPECT_EQ(
+      json_error(json_edge(
+          R"({"ends": [[0, "head"]], "cost": {"kind": "piecewise", "first": 0, "values": [0, 1, 1]}})")),
+      "bad.json: /edges/0/cost: edge 0: piecewise-linear cost is not convex at x = 1: "
+      "slope 1 before it, 0 after it (slopes must not decrease)");
 }
 
 TEST(ValidationJson, ModelRules) {
-  EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"], [1, "tail"]], "lower": 2, "upper": 1, "name": "e"})")),
+  EXPECT_EQ(json_error(json_edge(
+                R"({"ends": [[0, "head"], [1, "tail"]], "lower": 2, "upper": 1, "name": "e"})")),
             "bad.json: /edges/0/lower: edge 0 ('e'): lower bound 2 is greater than upper bound 1");
   EXPECT_EQ(json_error(json_edge(R"({"ends": [[1, "head"], [1, "tail"]]})")),
             "bad.json: /edges/0/ends: edge 0: head-tail loop at node 1 has no effect on "
             "conservation; expected head-head or tail-tail");
-  EXPECT_EQ(json_error(json_edge(R"({"ends": [[0, "head"]], "cost": {"kind": "linear", "slope": -2}})")),
-            "bad.json: /edges/0/cost: edge 0: cost decreases without limit as the flow grows "
-            "(slope -2 at +inf) but the upper bound is infinite: the cost has no minimum");
+  EXPECT_EQ(
+      json_error(json_edge(R"({"ends": [[0, "head"]], "cost": {"kind": "linear", "slope": -2}})")),
+      "bad.json: /edges/0/cost: edge 0: cost decreases without limit as the flow grows "
+      "(slope -2 at +inf) but the upper bound is infinite: the cost has no minimum");
   EXPECT_EQ(json_error(R"({"nodes": [{"demand": 2199023255552}], "edges": []})"),
             "bad.json: /nodes/0/demand: node 0: demand must be within +-2^40 (1099511627776), got "
             "2199023255552");

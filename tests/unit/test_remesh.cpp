@@ -1,0 +1,302 @@
+// From layout to quad mesh (quant/tessellate.hpp) and its measurements (metrics.hpp): every
+// shared layout becomes an all-quad, manifold, conforming mesh with the input's Euler
+// characteristic, close to the input surface, with about the reference quantizer's quad count;
+// smoothing never makes the worst quad worse; metrics and pictures on hand-checkable meshes;
+// the CLI's errors.
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "bimdf/metrics.hpp"
+#include "bimdf/quant/quantize.hpp"
+#include "bimdf/quant/tessellate.hpp"
+#include "bimdf/render.hpp"
+#include "cli_fixture.hpp"
+#include "shared_layouts.hpp"
+
+namespace bimdf::quant {
+namespace {
+
+// Independent topology check: "" or what is wrong. `boundary_edges` and `euler` are set.
+std::string check_topology(const QuadMesh& m, int& boundary_edges, int& euler) {
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& q : m.quads) {
+    if (std::set<int>(q.begin(), q.end()).size() != 4) return "a quad repeats a vertex";
+    for (int a = 0; a < 4; ++a)
+      if (++directed[{q[a], q[(a + 1) % 4]}] > 1) return "an edge is used twice in one direction";
+  }
+  std::set<std::pair<int, int>> undirected;
+  boundary_edges = 0;
+  std::map<int, int> boundary_out, boundary_in;
+  for (const auto& [e, n] : directed) {
+    undirected.insert({std::min(e.first, e.second), std::max(e.first, e.second)});
+    if (!directed.count({e.second, e.first})) {
+      ++boundary_edges;
+      if (++boundary_out[e.first] > 1 || ++boundary_in[e.second] > 1)
+        return "a vertex is on two boundary loops (pinched)";
+    }
+  }
+  std::set<int> used;
+  for (const auto& q : m.quads) used.insert(q.begin(), q.end());
+  euler = static_cast<int>(used.size()) - static_cast<int>(undirected.size()) + m.num_quads();
+  // Every vertex has a single fan: walk around it through shared edges.
+  std::map<int, std::vector<int>> at;
+  for (int f = 0; f < m.num_quads(); ++f)
+    for (int v : m.quads[f]) at[v].push_back(f);
+  std::map<std::pair<int, int>, std::vector<int>> edge_quads;
+  for (int f = 0; f < m.num_quads(); ++f)
+    for (int a = 0; a < 4; ++a) {
+      const int u = m.quads[f][a], w = m.quads[f][(a + 1) % 4];
+      edge_quads[{std::min(u, w), std::max(u, w)}].push_back(f);
+    }
+  for (const auto& [v, quads] : at) {
+    std::set<int> seen{quads[0]};
+    std::vector<int> todo{quads[0]};
+    while (!todo.empty()) {
+      const int f = todo.back();
+      todo.pop_back();
+      for (int a = 0; a < 4; ++a)
+        if (m.quads[f][a] == v)
+          for (int w : {m.quads[f][(a + 1) % 4], m.quads[f][(a + 3) % 4]})
+            for (int g : edge_quads[{std::min(v, w), std::max(v, w)}])
+              if (seen.insert(g).second) todo.push_back(g);
+    }
+    if (seen.size() != quads.size()) return "vertex " + std::to_string(v) + " has two fans";
+  }
+  return "";
+}
+
+int euler_characteristic(const TriangleMesh& t) {
+  std::set<std::pair<int, int>> edges;
+  for (const auto& f : t.faces)
+    for (int a = 0; a < 3; ++a)
+      edges.insert({std::min(f[a], f[(a + 1) % 3]), std::max(f[a], f[(a + 1) % 3])});
+  return t.num_vertices() - static_cast<int>(edges.size()) + t.num_faces();
+}
+
+struct Remeshed {
+  Tessellation raw, smoothed;
+  Quantization quantization;
+};
+
+Remeshed remesh(const Layout& layout) {
+  Remeshed r;
+  r.quantization = quantize(layout, QuantizeOptions{});
+  r.raw = tessellate(layout, r.quantization.lengths(), SmoothingOptions{0, 0.5});
+  r.smoothed = tessellate(layout, r.quantization.lengths());
+  return r;
+}
+
+// The conformity, topology and fidelity checks of issue 7 on one layout.
+void expect_good_remesh(const Layout& layout, const Remeshed& r, const std::string& name) {
+  const QuadMesh& m = r.smoothed.mesh;
+  int boundary = -1, euler = 0;
+  ASSERT_EQ(check_topology(m, boundary, euler), "") << name;
+  EXPECT_EQ(euler, euler_characteristic(layout.mesh)) << name;
+  // Watertight where the input was: the boundary is exactly the border subsides' quad edges.
+  int64_t border = 0;
+  for (size_t s = 0; s < layout.subsides.size(); ++s)
+    if (layout.subsides[s].on_border()) border += r.quantization.lengths()[s];
+  EXPECT_EQ(boundary, border) << name;
+  // Every chart tiled, with the pattern's quads.
+  int64_t quads = 0;
+  for (size_t c = 0; c < layout.charts.size(); ++c) {
+    EXPECT_EQ(r.smoothed.charts[c].quads > 0, !layout.charts[c].empty()) << name << " " << c;
+    quads += r.smoothed.charts[c].quads;
+  }
+  EXPECT_EQ(quads, m.num_quads());
+  // On the surface; smoothing moves vertices but never adds inverted quads, and lowers no
+  // quad's scaled Jacobian below min(its worst before, 0.5).
+  const QuadMeshMetrics raw = measure_quad_mesh(r.raw.mesh);
+  const QuadMeshMetrics smooth = measure_quad_mesh(m, &layout.mesh);
+  EXPECT_LT(smooth.hausdorff_relative, 0.02) << name;
+  EXPECT_GE(smooth.scaled_jacobian_min, std::min(raw.scaled_jacobian_min, 0.5)) << name;
+  EXPECT_LE(smooth.inverted, raw.inverted) << name;
+  EXPECT_GT(smooth.scaled_jacobian_mean, raw.scaled_jacobian_mean) << name;
+}
+
+TEST(Remesh, BundledLayoutBecomesAClosedConformingQuadMesh) {
+  const Layout layout =
+      read_quadwild_layout(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj");
+  const Remeshed r = remesh(layout);
+  expect_good_remesh(layout, r, "npm_bunny");
+  // Regular charts: the tessellation has exactly the quad count the flow's strips predict.
+  EXPECT_EQ(r.smoothed.mesh.num_quads(),
+            std::llround(r.quantization.final_round().estimated_quads));
+  for (const ChartTiling& c : r.smoothed.charts) EXPECT_EQ(c.kind, PatternKind::Regular);
+}
+
+TEST(RemeshShared, EveryLayoutBecomesAConformingQuadMeshOfTheReferenceSize) {
+  REQUIRE_SHARED_LAYOUTS();
+  const std::vector<testing::Reference> refs = testing::references();
+  ASSERT_EQ(refs.size(), 23u);
+  for (const testing::Reference& ref : refs) {
+    const Layout layout = read_quadwild_layout(testing::layout_path(ref.mesh));
+    const Remeshed r = remesh(layout);
+    expect_good_remesh(layout, r, ref.mesh);
+    EXPECT_NEAR(r.smoothed.mesh.num_quads(), ref.align_quads, 0.1 * ref.align_quads) << ref.mesh;
+    for (const ChartTiling& c : r.smoothed.charts) EXPECT_NE(c.kind, PatternKind::Fan) << ref.mesh;
+  }
+}
+
+TEST(Remesh, LengthsThatAdmitNoPatternAreRejected) {
+  const Layout layout =
+      read_quadwild_layout(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj");
+  std::vector<int64_t> lengths(layout.subsides.size(), 2);
+  const auto message = [&](const std::vector<int64_t>& l) -> std::string {
+    try {
+      tessellate(layout, l);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(message(std::vector<int64_t>(3, 2)), "3 subside lengths for 275 subsides");
+  lengths[7] = 0;
+  EXPECT_EQ(message(lengths), "subside 7: length 0, expected 1 to 2^24");
+  lengths[7] = 3;
+  const int c = layout.subsides[7].charts[0];
+  EXPECT_EQ(message(lengths), "chart " + std::to_string(c) + ": perimeter " +
+                                  std::to_string(2 * layout.charts[c].subsides.size() + 1) +
+                                  ", expected an even number of at least 4");
+}
+
+// A 2 × 2 grid in the plane z = 0 and the same square as two triangles.
+QuadMesh grid() {
+  QuadMesh m;
+  for (int y = 0; y <= 2; ++y)
+    for (int x = 0; x <= 2; ++x) m.vertices.push_back({double(x), double(y), 0});
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x)
+      m.quads.push_back({3 * y + x, 3 * y + x + 1, 3 * y + x + 4, 3 * y + x + 3});
+  m.quad_patch = {0, 0, 1, 1};
+  return m;
+}
+
+TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
+  TriangleMesh square{{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}};
+  QuadMesh g = grid();
+  g.vertices[4][2] = 0.5;  // lift the centre: Hausdorff 0.5 to the square, diagonal √8
+  const QuadMeshMetrics m = measure_quad_mesh(g, &square);
+  EXPECT_EQ(m.faces, 4);
+  EXPECT_EQ(m.vertices, 9);
+  EXPECT_EQ(m.edges, 12);
+  EXPECT_EQ(m.euler_characteristic, 1);
+  EXPECT_EQ(m.boundary_edges, 8);
+  EXPECT_TRUE(m.manifold());
+  EXPECT_EQ(m.interior_singularities, (std::map<int, int>{}));
+  EXPECT_EQ(m.boundary_singularities, (std::map<int, int>{{2, 4}}));  // the corners
+  EXPECT_EQ(m.base_complex_faces, 1);
+  EXPECT_DOUBLE_EQ(m.hausdorff, 0.5);
+  EXPECT_NEAR(m.hausdorff_relative, 0.5 / std::sqrt(8.0), 1e-15);
+  EXPECT_EQ(m.flipped, 0);
+  EXPECT_EQ(m.inverted, 0);
+  EXPECT_LT(m.scaled_jacobian_min, 1);
+
+  // A cube: eight valence-3 vertices, every edge a separatrix, six base-complex patches.
+  QuadMesh cube;
+  for (int i = 0; i < 8; ++i)
+    cube.vertices.push_back({double(i & 1), double(i >> 1 & 1), double(i >> 2)});
+  cube.quads = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const QuadMeshMetrics c = measure_quad_mesh(cube);
+  EXPECT_EQ(c.euler_characteristic, 2);
+  EXPECT_EQ(c.boundary_edges, 0);
+  EXPECT_TRUE(c.manifold());
+  EXPECT_EQ(c.interior_singularities, (std::map<int, int>{{3, 8}}));
+  EXPECT_EQ(c.base_complex_faces, 6);
+  EXPECT_DOUBLE_EQ(c.scaled_jacobian_min, 1);
+  EXPECT_DOUBLE_EQ(c.scaled_jacobian_p5, 1);
+  EXPECT_EQ(c.hausdorff, -1);
+
+  // Folding one quad over: inverted; two quads on one edge in the same direction: not manifold.
+  QuadMesh folded = grid();
+  folded.vertices[0] = {1.5, 1.5, 0};
+  EXPECT_EQ(measure_quad_mesh(folded).inverted, 1);
+  QuadMesh bad = grid();
+  bad.quads.push_back({0, 1, 4, 3});
+  EXPECT_EQ(measure_quad_mesh(bad).non_manifold_edges, 4);
+}
+
+TEST(Render, DrawsTheMeshIntoAValidPng) {
+  RenderOptions o;
+  o.width = 64, o.height = 48, o.view = {0, 0, -1};
+  const Image image = render_quad_mesh(grid(), o);
+  ASSERT_EQ(image.rgb.size(), 64u * 48 * 3);
+  // The grid fills the middle (patch colours, shaded); the corner is background.
+  const auto pixel = [&](int x, int y) {
+    const size_t i = (static_cast<size_t>(y) * 64 + x) * 3;
+    return std::array<int, 3>{image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]};
+  };
+  EXPECT_NE(pixel(16, 30), pixel(0, 0));
+  EXPECT_NE(pixel(16, 30), pixel(48, 18));  // patches 0 and 1 differ in colour
+  const std::string png = encode_png(image);
+  ASSERT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(png.substr(12, 4), "IHDR");
+  EXPECT_EQ(static_cast<unsigned char>(png[19]), 64);  // width, big-endian
+  EXPECT_EQ(static_cast<unsigned char>(png[23]), 48);
+  // The IDAT chunk inflates to one filter byte plus 64 RGB pixels per row.
+  const size_t idat = png.find("IDAT");
+  const uint32_t length = (uint8_t(png[idat - 4]) << 24) | (uint8_t(png[idat - 3]) << 16) |
+                          (uint8_t(png[idat - 2]) << 8) | uint8_t(png[idat - 1]);
+  std::vector<unsigned char> raw(48 * (64 * 3 + 1) + 16);
+  uLongf raw_size = raw.size();
+  ASSERT_EQ(uncompress(raw.data(), &raw_size, reinterpret_cast<const Bytef*>(png.data() + idat + 4),
+                       length),
+            Z_OK);
+  EXPECT_EQ(raw_size, 48u * (64 * 3 + 1));
+  EXPECT_EQ(raw[0], 0);
+  EXPECT_EQ(raw[1 + (30 * (64 * 3 + 1)) + 16 * 3], pixel(16, 30)[0]);
+}
+
+class RemeshCli : public testing::CliFixture {};
+
+TEST_F(RemeshCli, TessellateReadsQuantizeOutputAndReportsBadLengths) {
+  const std::string layout = std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj";
+  ASSERT_EQ(run("quantize " + layout + " -o " + path("q.json")).exit_code, 0);
+  testing::CliRun r = run("tessellate " + layout + " " + path("q.json") + " -o " + path("m.obj"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("5996 quads"), std::string::npos) << r.out;
+  const QuadMesh m = read_obj_quads(path("m.obj"));
+  EXPECT_EQ(m.num_quads(), 5996);
+  EXPECT_EQ(std::set<int>(m.quad_patch.begin(), m.quad_patch.end()).size(), 104u);
+
+  write("short.json", R"({"subside_lengths": [1, 2, 3]})");
+  r = run("tessellate " + layout + " " + path("short.json") + " -o " + path("m2.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "error: " + path("short.json") +
+                       ": /subside_lengths: 3 lengths, but the layout has 275 subsides\n");
+  EXPECT_FALSE(std::filesystem::exists(path("m2.obj")));
+
+  r = run("metrics " + path("q.json"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "error: " + path("q.json") + ": no faces: expected an OBJ quad mesh\n");
+
+  write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  r = run("metrics " + path("tri.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "error: " + path("tri.obj") + ":4: face 0 has 3 vertices, expected a quad\n");
+
+  r = run("metrics " + path("m.obj") + " --reference " + layout + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["faces"], 5996);
+  EXPECT_EQ(j["euler_characteristic"], 2);
+  EXPECT_EQ(j["manifold"], true);
+  EXPECT_LT(j["hausdorff_relative"].get<double>(), 0.02);
+
+  r = run("render " + path("m.obj") + " -o " + path("m.png") + " --width 320 --height 240");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(slurp(path("m.png")).substr(1, 3), "PNG");
+  r = run("render " + path("m.obj") + " -o " + path("m.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("refusing to overwrite an input"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace bimdf::quant
