@@ -1,15 +1,19 @@
 #!/usr/bin/env bash
-# Sets up (Debian packages), builds the bimdf CLI and runs the main job on the bundled example, a
-# real Bi-MDF instance (the Stanford bunny's quantization model from QuadWild): validate it and
-# print its summary, solve it exactly, write the solution JSON and verify it with
-# `bimdf check`; then quantize the bunny's patch layout itself (bimdf quantize), writing the
-# integer subside lengths as JSON. Usage: scripts/run_example.sh
+# Sets up (Debian packages), builds the bimdf CLI and runs the main job on the bundled example:
+# remesh the bunny's QuadWild patch layout end to end (quantize exactly, tessellate, smooth,
+# measure), draw the quad mesh into a PNG; then solve a real Bi-MDF instance (the bunny's
+# quantization model from QuadWild) exactly and verify the solution with `bimdf check`.
+# Usage: scripts/run_example.sh
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/setup.sh"
 build="${BUILD_DIR:-$root/build}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j"${JOBS:-2}" --target bimdf_cli
+layout="$root/examples/npm_bunny/npm_bunny.obj"
+"$build/bin/bimdf" remesh "$layout" -o "$build/npm_bunny.quads.obj"
+"$build/bin/bimdf" render "$build/npm_bunny.quads.obj" -o "$build/npm_bunny.png"
+echo
 example="$root/examples/npm_bunny__flow_noalign_lemon_0.bimdf"
 solution="$build/npm_bunny.solution.json"
 "$build/bin/bimdf" info "$example"
@@ -18,9 +22,3 @@ echo
 echo
 "$build/bin/bimdf" check "$example" "$solution"
 echo "solution written to $solution"
-echo
-layout="$root/examples/npm_bunny/npm_bunny.obj"
-quantization="$build/npm_bunny.quant.json"
-"$build/bin/bimdf" quantize "$layout"
-"$build/bin/bimdf" quantize "$layout" -o "$quantization" >/dev/null
-echo "quantization written to $quantization"

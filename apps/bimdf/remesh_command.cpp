@@ -105,7 +105,7 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
     << kinds[quant::PatternKind::Fan] << " fans (of " << charts << " charts); " << singular
     << " interior singularities\n";
   s << "tessellation  patterns " << ms(t.time_patterns_s) << ", mapping " << ms(t.time_mapping_s)
-    << "\n";
+    << ", smoothing " << ms(t.time_smoothing_s) << "\n";
   if (verbose)
     for (size_t c = 0; c < t.charts.size(); ++c)
       if (t.charts[c].quads > 0 && t.charts[c].kind != quant::PatternKind::Regular)
@@ -247,12 +247,16 @@ int run_remesh(const RemeshCommandOptions& o) {
   write_mesh(t, o, {o.quantize.layout});
   const QuantizationReport qr = report_quantization(layout, q, o.quantize, read_s, quantized_s);
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
+  const auto measuring = std::chrono::steady_clock::now();
   const TessellationReport mr = report_metrics(measure_quad_mesh(t.mesh, &layout.mesh));
   json j = tr.j;
   j["quantization"] = qr.json;
   j["metrics"] = mr.j;
-  tr.text += mr.text;
+  j["time"]["read_s"] = read_s;
+  j["time"]["quantize_s"] = quantized_s - read_s;
+  j["time"]["metrics_s"] = seconds_since(measuring);
   j["time"]["total_s"] = seconds_since(start);
+  tr.text += mr.text + "total time    " + ms(seconds_since(start)) + "\n";
   for (const std::string& w : layout.warnings) std::cerr << "warning: " << w << "\n";
   deliver(o.quantize.out, qr.text + tr.text, j.dump(1) + "\n", {o.quantize.layout});
   return kOk;
