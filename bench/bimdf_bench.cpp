@@ -23,6 +23,7 @@
 #include "bimdf/generate.hpp"
 #include "bimdf/io.hpp"
 #include "layout_bench.hpp"
+#include "remesh_bench.hpp"
 #include "milp_model.hpp"
 
 namespace {
@@ -141,7 +142,8 @@ int main(int argc, char** argv) {
                "Run just the layout benchmark (no instances, no scaling series)");
   app.add_option("--layouts", layouts_dir,
                  "Folder of QuadWild layouts (with expected.tsv): benchmark `bimdf quantize` and "
-                 "replace the <!-- quantize:begin/end --> section of the Markdown file");
+                 "`bimdf remesh`, replacing the <!-- quantize:begin/end --> and "
+                 "<!-- remesh:begin/end --> sections of the Markdown file");
   CLI11_PARSE(app, argc, argv);
   if (only_layouts) {
     instances_dir.clear();
@@ -343,6 +345,12 @@ int main(int argc, char** argv) {
     std::cout << "\n" << section;
     if (!md_path.empty() && !replace_section(md_path, "quantize", section)) {
       std::cerr << md_path << ": no <!-- quantize:begin --> ... <!-- quantize:end --> section\n";
+      return 2;
+    }
+    const std::string remesh = benchmark_remesh(cli, layouts_dir, repeats);
+    std::cout << "\n" << remesh;
+    if (!md_path.empty() && !replace_section(md_path, "remesh", remesh)) {
+      std::cerr << md_path << ": no <!-- remesh:begin --> ... <!-- remesh:end --> section\n";
       return 2;
     }
   }
