@@ -29,6 +29,10 @@ double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& q) {
   const Vec3 n = newell_normal(mesh, q);
   const double nn = std::sqrt(dot(n, n));
   if (nn == 0) return 0;
+  return scaled_jacobian(mesh, q, {n[0] / nn, n[1] / nn, n[2] / nn});
+}
+
+double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& q, const Vec3& n) {
   double worst = 1;
   for (int a = 0; a < 4; ++a) {
     const Vec3& c = mesh.vertices[q[a]];
@@ -37,7 +41,7 @@ double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& q) {
     const Vec3 x{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
                  e1[0] * e2[1] - e1[1] * e2[0]};
     const double l = std::sqrt(dot(e1, e1) * dot(e2, e2));
-    worst = std::min(worst, l > 0 ? dot(x, n) / (l * nn) : 0.0);
+    worst = std::min(worst, l > 0 ? dot(x, n) / l : 0.0);
   }
   return worst;
 }

@@ -2,9 +2,12 @@
 // input surface. Each free vertex is projected onto the triangles of the chart(s) it belongs
 // to rather than onto the whole surface, so that on thin parts it cannot jump to the far side.
 #include <algorithm>
+#include <cmath>
 #include <memory>
+#include <numbers>
 #include <set>
 #include <utility>
+#include <vector>
 
 #include "bimdf/quant/tessellate.hpp"
 #include "mesh/closest_point.hpp"
@@ -15,6 +18,49 @@ namespace {
 
 // Quads at least this good (scaled Jacobian) may get worse while smoothing, down to this.
 constexpr double kGoodEnough = 0.5;
+// Vertices whose worst quad is worse than this get the local search.
+constexpr double kBad = 0.2;
+
+// Points around `at` in the plane of the quads `quads`: 8 directions, 3 distances relative to
+// the mean length of the edges to `neighbours`.
+std::vector<std::array<double, 3>> tangent_probes(const QuadMesh& mesh,
+                                                  const std::vector<int>& quads,
+                                                  const std::vector<int>& neighbours,
+                                                  const std::array<double, 3>& at) {
+  std::array<double, 3> n{0, 0, 0};
+  for (int f : quads) {
+    const std::array<double, 3> q = detail::newell_normal(mesh, mesh.quads[f]);
+    for (int d = 0; d < 3; ++d) n[d] += q[d];
+  }
+  const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (nn == 0 || neighbours.empty()) return {};
+  for (double& x : n) x /= nn;
+  // t1: the axis least aligned with n, made orthogonal; t2 = n × t1.
+  std::array<double, 3> t1{0, 0, 0};
+  const int axis = std::abs(n[0]) < std::abs(n[1]) ? (std::abs(n[0]) < std::abs(n[2]) ? 0 : 2)
+                                                   : (std::abs(n[1]) < std::abs(n[2]) ? 1 : 2);
+  t1[axis] = 1;
+  for (int d = 0; d < 3; ++d) t1[d] -= n[axis] * n[d];
+  const double l1 = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
+  for (double& x : t1) x /= l1;
+  const std::array<double, 3> t2{n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
+                                 n[0] * t1[1] - n[1] * t1[0]};
+  double length = 0;
+  for (int w : neighbours) {
+    double l2 = 0;
+    for (int d = 0; d < 3; ++d) l2 += (mesh.vertices[w][d] - at[d]) * (mesh.vertices[w][d] - at[d]);
+    length += std::sqrt(l2) / neighbours.size();
+  }
+  std::vector<std::array<double, 3>> probes;
+  for (double step : {0.6, 0.3, 0.1, 0.03})
+    for (int k = 0; k < 8; ++k) {
+      const double c = std::cos(k * std::numbers::pi / 4), s = std::sin(k * std::numbers::pi / 4);
+      std::array<double, 3> p;
+      for (int d = 0; d < 3; ++d) p[d] = at[d] + step * length * (c * t1[d] + s * t2[d]);
+      probes.push_back(p);
+    }
+  return probes;
+}
 
 // The point of a mesh polyline closest to p (face −1).
 detail::TriangleTree::Hit closest_on_polyline(const Layout& layout, const std::vector<int>& chain,
@@ -101,11 +147,34 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
   std::vector<std::vector<int>> vertex_quads(nv);
   for (int f = 0; f < mesh.num_quads(); ++f)
     for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
-  // The worst scaled Jacobian among the quads at v.
+  // The surface's normal under each quad (at its centre's closest point on its chart): the
+  // quality below measures quads against it, so that turning a quad over never looks good.
+  std::vector<std::array<double, 3>> up(mesh.num_quads());
+  for (int f = 0; f < mesh.num_quads(); ++f) {
+    std::array<double, 3> centre{0, 0, 0};
+    for (int v : mesh.quads[f])
+      for (int d = 0; d < 3; ++d) centre[d] += mesh.vertices[v][d] / 4;
+    const int c = f < static_cast<int>(mesh.quad_patch.size()) ? mesh.quad_patch[f] : -1;
+    std::array<double, 3> n = detail::newell_normal(mesh, mesh.quads[f]);
+    if (c >= 0 && tree[c]) {
+      const auto& t = layout.mesh.faces[tree[c]->closest(centre).face];
+      const auto &a = layout.mesh.vertices[t[0]], &b = layout.mesh.vertices[t[1]],
+                 &e = layout.mesh.vertices[t[2]];
+      n = {(b[1] - a[1]) * (e[2] - a[2]) - (b[2] - a[2]) * (e[1] - a[1]),
+           (b[2] - a[2]) * (e[0] - a[0]) - (b[0] - a[0]) * (e[2] - a[2]),
+           (b[0] - a[0]) * (e[1] - a[1]) - (b[1] - a[1]) * (e[0] - a[0])};
+    }
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    up[f] = l > 0 ? std::array<double, 3>{n[0] / l, n[1] / l, n[2] / l}
+                  : std::array<double, 3>{0, 0, 0};
+  }
+  // The worst scaled Jacobian among the quads at v, against the surface's normal and against
+  // the quad's own (what metrics.hpp reports).
   const auto quality = [&](int v) {
     double worst = 1;
     for (int f : vertex_quads[v])
-      worst = std::min(worst, detail::scaled_jacobian(mesh, mesh.quads[f]));
+      worst = std::min({worst, detail::scaled_jacobian(mesh, mesh.quads[f], up[f]),
+                        detail::scaled_jacobian(mesh, mesh.quads[f])});
     return worst;
   };
   for (int iteration = 0; iteration < options.iterations; ++iteration) {
@@ -120,10 +189,8 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
         for (int d = 0; d < 3; ++d)
           mean[d] += 0.5 * (mesh.vertices[a][d] + mesh.vertices[c][d] - mesh.vertices[b][d]) /
                      corners[v].size();
-      // Where v would go with a step of `damping` towards the mean, back on the surface.
-      const auto candidate = [&](double damping) {
-        std::array<double, 3> p;
-        for (int d = 0; d < 3; ++d) p[d] = (1 - damping) * mesh.vertices[v][d] + damping * mean[d];
+      // p back on the surface: on v's curve, or on its charts' triangles.
+      const auto project = [&](const std::array<double, 3>& p) {
         detail::TriangleTree::Hit best;
         best.distance = -1;
         if (curve[v] >= 0)
@@ -135,13 +202,28 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
         }
         return best.distance >= 0 ? best.point : p;
       };
+      const std::array<double, 3> old = mesh.vertices[v];
+      // Where v would go with a step of `damping` towards the mean.
+      const auto candidate = [&](double damping) {
+        std::array<double, 3> p;
+        for (int d = 0; d < 3; ++d) p[d] = (1 - damping) * old[d] + damping * mean[d];
+        return project(p);
+      };
       // Moves in place, and only if the quads at v stay as good as they were or good enough:
       // smoothing never creates an inverted quad and never worsens the worst one. Where the
-      // quads at v are bad, longer and shorter steps are tried too.
+      // quads at v are bad, longer and shorter steps are tried too, and then a local search
+      // in the tangent plane for the position that makes the worst quad best.
       const double before = quality(v);
-      const std::array<double, 3> old = mesh.vertices[v];
       std::array<double, 3> chosen = old;
       double chosen_quality = -2;
+      if (before < kBad) {
+        for (const std::array<double, 3>& p :
+             tangent_probes(mesh, vertex_quads[v], neighbours[v], old)) {
+          mesh.vertices[v] = project(p);
+          const double q = quality(v);
+          if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
+        }
+      }
       for (double damping : {options.damping, 1.0, 0.25}) {
         mesh.vertices[v] = candidate(damping);
         const double q = quality(v);
