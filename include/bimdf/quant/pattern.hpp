@@ -11,8 +11,9 @@
 // edges between two boundary vertices, into two sub-patches that are regular — or are cut
 // again — choosing the cut that creates the fewest singularities and whose length best fits
 // the distance it spans; the cuts play the role of the padding and edge-flow parameters of
-// Takayama et al.'s patterns (SGP 2014). Should no cut sequence work, a fan of quads around
-// one boundary vertex covers the patch, so no chart is ever left without quads.
+// Takayama et al.'s patterns (SGP 2014). Should no cut sequence work, a fan — quads around one
+// new centre vertex, each on two boundary edges, or around a corner — covers the patch, so no
+// chart is ever left without quads. (No side vector with sides up to 9 needs the fan.)
 #pragma once
 
 #include <array>
@@ -24,7 +25,7 @@ namespace bimdf::quant {
 enum class PatternKind {
   Regular,  // the regular pattern of the side vector (grid, or one valence-k singularity)
   Cut,      // regular sub-patches joined along cut chains
-  Fan       // the last resort: quads fanned around one boundary vertex, no interior vertex
+  Fan       // the last resort: quads fanned around a centre vertex or a corner
 };
 
 std::string to_string(PatternKind kind);
@@ -52,8 +53,8 @@ std::vector<std::array<double, 2>> pattern_polygon(const std::vector<int>& sides
 // The pattern for `sides` (see above). Boundary vertices sit on pattern_polygon(sides), evenly
 // spaced along each side; interior vertices at the average of their neighbours (Tutte's
 // embedding, which keeps faces convex on the convex polygon). Among the candidate patterns the
-// first whose quads are all convex (no corner turning clockwise) is taken; the fan is convex by
-// construction. Throws std::invalid_argument if k is outside 3…6, a side is < 1, or the perimeter
+// first whose quads are all convex (no corner turning clockwise) is taken; if none is, the
+// first fan, convex or not (a valid disk of quads all the same). Throws std::invalid_argument if k is outside 3…6, a side is < 1, or the perimeter
 // is odd or < 4.
 QuadPattern make_quad_pattern(const std::vector<int>& sides);
 
