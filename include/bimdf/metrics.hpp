@@ -39,7 +39,9 @@ struct QuadMeshMetrics {
   // Against a reference surface (−1 / 0 when none was given).
   double hausdorff = -1;           // max distance from the quad mesh to the reference
   double hausdorff_relative = -1;  // hausdorff / the reference's bounding-box diagonal
-  int flipped = 0;  // faces whose normal opposes the reference's at their centre's closest point
+  // Faces whose normal opposes the reference's: the sum of its unit normals at the closest
+  // points of the face's corners.
+  int flipped = 0;
 };
 
 // Measures `mesh`; with `reference`, also the one-sided Hausdorff distance from the quad mesh

@@ -165,8 +165,19 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
     const auto sample = [&](const Vec3& p) {
       m.hausdorff = std::max(m.hausdorff, tree.closest(p).distance);
     };
-    for (int v = 0; v < nv; ++v)
-      if (used[v]) sample(mesh.vertices[v]);
+    // The reference's unit normal at each vertex's closest point. Vertices lie on the surface
+    // (distance ~0), so unlike a quad's centre they cannot pick the far side of a thin part.
+    std::vector<Vec3> vertex_normal(nv, Vec3{0, 0, 0});
+    for (int v = 0; v < nv; ++v) {
+      if (!used[v]) continue;
+      const detail::TriangleTree::Hit hit = tree.closest(mesh.vertices[v]);
+      m.hausdorff = std::max(m.hausdorff, hit.distance);
+      const auto& t = reference->faces[hit.face];
+      const Vec3 n = cross(sub(reference->vertices[t[1]], reference->vertices[t[0]]),
+                           sub(reference->vertices[t[2]], reference->vertices[t[0]]));
+      const double l = norm(n);
+      if (l > 0) vertex_normal[v] = {n[0] / l, n[1] / l, n[2] / l};
+    }
     for (const auto& [e, quads] : edges) {
       const Vec3& a = mesh.vertices[e.first];
       const Vec3& b = mesh.vertices[e.second];
@@ -177,10 +188,9 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
       for (int v : q)
         for (int d = 0; d < 3; ++d) c[d] += mesh.vertices[v][d] / 4;
       sample(c);
-      const detail::TriangleTree::Hit hit = tree.closest(c);
-      const auto& t = reference->faces[hit.face];
-      const Vec3 normal = cross(sub(reference->vertices[t[1]], reference->vertices[t[0]]),
-                                sub(reference->vertices[t[2]], reference->vertices[t[0]]));
+      Vec3 normal{0, 0, 0};
+      for (int v : q)
+        for (int d = 0; d < 3; ++d) normal[d] += vertex_normal[v][d];
       m.flipped += dot(normal, detail::newell_normal(mesh, q)) < 0;
     }
     const double diagonal = norm(sub(hi, lo));

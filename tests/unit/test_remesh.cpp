@@ -203,6 +203,10 @@ TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
   EXPECT_EQ(m.inverted, 0);
   EXPECT_LT(m.scaled_jacobian_min, 1);
 
+  QuadMesh turned = grid();
+  std::reverse(turned.quads[0].begin(), turned.quads[0].end());
+  EXPECT_EQ(measure_quad_mesh(turned, &square).flipped, 1);
+
   // A cube: eight valence-3 vertices, every edge a separatrix, six base-complex patches.
   QuadMesh cube;
   for (int i = 0; i < 8; ++i)
