@@ -11,21 +11,21 @@
 #include <unordered_map>
 
 #include "bimdf/quant/pattern.hpp"
+#include "mesh/vec3.hpp"
 
 namespace bimdf::quant::detail {
 namespace {
 
-using Vec3 = std::array<double, 3>;
-
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+using bimdf::detail::cross;
+using bimdf::detail::dot;
+using bimdf::detail::norm;
+using bimdf::detail::sub;
+using bimdf::detail::Vec3;
 
 // tan(θ/2) of the angle θ between u and v, stable for all angles: sin θ / (1 + cos θ).
 double tan_half_angle(const Vec3& u, const Vec3& v) {
-  const Vec3 cross{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-  const double dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-  const double denominator = norm(u) * norm(v) + dot;
-  return denominator > 0 ? norm(cross) / denominator : 1e6;
+  const double denominator = norm(u) * norm(v) + dot(u, v);
+  return denominator > 0 ? norm(cross(u, v)) / denominator : 1e6;
 }
 
 }  // namespace
@@ -60,7 +60,8 @@ ChartParametrization parametrize_chart(const Layout& layout, int c,
       if (side.reversed[i]) std::reverse(chain.begin(), chain.end());
       std::vector<double> arc(chain.size(), 0);
       for (size_t m = 1; m < chain.size(); ++m)
-        arc[m] = arc[m - 1] + norm(minus(mesh.vertices[chain[m]], mesh.vertices[chain[m - 1]]));
+        arc[m] = arc[m - 1] +
+                 norm(bimdf::detail::sub(mesh.vertices[chain[m]], mesh.vertices[chain[m - 1]]));
       const int64_t x = lengths[side.subsides[i]];
       for (size_t m = 0; m + 1 < chain.size(); ++m) {
         const double fraction =
@@ -95,8 +96,8 @@ ChartParametrization parametrize_chart(const Layout& layout, int c,
       if (i < nb) continue;
       const Vec3& xi = mesh.vertices[param.mesh_vertex[i]];
       const int j = t[(a + 1) % 3], l = t[(a + 2) % 3];
-      const Vec3 u = minus(mesh.vertices[param.mesh_vertex[j]], xi);
-      const Vec3 v = minus(mesh.vertices[param.mesh_vertex[l]], xi);
+      const Vec3 u = sub(mesh.vertices[param.mesh_vertex[j]], xi);
+      const Vec3 v = sub(mesh.vertices[param.mesh_vertex[l]], xi);
       const double half = tan_half_angle(u, v);
       constexpr double kTiny = 1e-300;
       for (auto [other, d] : {std::pair{j, norm(u)}, std::pair{l, norm(v)}}) {

@@ -5,11 +5,11 @@
 #include <limits>
 #include <utility>
 
+#include "mesh/vec3.hpp"
+
 namespace bimdf::detail {
 namespace {
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Vec3 along(const Vec3& a, const Vec3& d, double t) {
   return {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]};
 }

@@ -6,10 +6,9 @@
 #include <vector>
 
 #include "bimdf/mesh.hpp"
+#include "mesh/vec3.hpp"
 
 namespace bimdf::detail {
-
-using Vec3 = std::array<double, 3>;
 
 // The point of triangle (a, b, c) closest to p (by Voronoi regions of its vertices and edges).
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);

@@ -8,6 +8,7 @@
 
 #include "mesh/closest_point.hpp"
 #include "mesh/quad_quality.hpp"
+#include "mesh/vec3.hpp"
 
 namespace bimdf {
 
@@ -20,14 +21,10 @@ int QuadMeshMetrics::singular_vertices() const {
 
 namespace {
 
+using detail::dot;
+using detail::norm;
+using detail::sub;
 using detail::Vec3;
-
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
 using Edge = std::pair<int, int>;
 Edge undirected(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
@@ -172,11 +169,7 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
       if (!used[v]) continue;
       const detail::TriangleTree::Hit hit = tree.closest(mesh.vertices[v]);
       m.hausdorff = std::max(m.hausdorff, hit.distance);
-      const auto& t = reference->faces[hit.face];
-      const Vec3 n = cross(sub(reference->vertices[t[1]], reference->vertices[t[0]]),
-                           sub(reference->vertices[t[2]], reference->vertices[t[0]]));
-      const double l = norm(n);
-      if (l > 0) vertex_normal[v] = {n[0] / l, n[1] / l, n[2] / l};
+      vertex_normal[v] = detail::normalized(detail::triangle_normal(*reference, hit.face));
     }
     for (const auto& [e, quads] : edges) {
       const Vec3& a = mesh.vertices[e.first];

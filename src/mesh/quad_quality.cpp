@@ -3,15 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesh/vec3.hpp"
+
 namespace bimdf::detail {
-namespace {
-
-using Vec3 = std::array<double, 3>;
-
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-}  // namespace
 
 Vec3 newell_normal(const QuadMesh& mesh, const std::array<int, 4>& q) {
   Vec3 n{0, 0, 0};
@@ -38,8 +32,7 @@ double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& q, const 
     const Vec3& c = mesh.vertices[q[a]];
     const Vec3 e1 = sub(mesh.vertices[q[(a + 1) % 4]], c);
     const Vec3 e2 = sub(mesh.vertices[q[(a + 3) % 4]], c);
-    const Vec3 x{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                 e1[0] * e2[1] - e1[1] * e2[0]};
+    const Vec3 x = cross(e1, e2);
     const double l = std::sqrt(dot(e1, e1) * dot(e2, e2));
     worst = std::min(worst, l > 0 ? dot(x, n) / l : 0.0);
   }

@@ -10,20 +10,16 @@
 #include <set>
 #include <stdexcept>
 
+#include "mesh/vec3.hpp"
+
 namespace bimdf {
 namespace {
 
-using Vec3 = std::array<double, 3>;
-
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 normalized(const Vec3& a) {
-  const double n = std::sqrt(dot(a, a));
-  return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
-}
+using detail::cross;
+using detail::dot;
+using detail::normalized;
+using detail::sub;
+using detail::Vec3;
 
 Vec3 quad_normal(const QuadMesh& mesh, const std::array<int, 4>& q) {
   return cross(sub(mesh.vertices[q[2]], mesh.vertices[q[0]]),

@@ -27,30 +27,24 @@ std::vector<std::array<double, 3>> tangent_probes(const QuadMesh& mesh,
                                                   const std::vector<int>& quads,
                                                   const std::vector<int>& neighbours,
                                                   const std::array<double, 3>& at) {
-  std::array<double, 3> n{0, 0, 0};
+  detail::Vec3 sum{0, 0, 0};
   for (int f : quads) {
-    const std::array<double, 3> q = detail::newell_normal(mesh, mesh.quads[f]);
-    for (int d = 0; d < 3; ++d) n[d] += q[d];
+    const detail::Vec3 q = detail::newell_normal(mesh, mesh.quads[f]);
+    for (int d = 0; d < 3; ++d) sum[d] += q[d];
   }
-  const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if (nn == 0 || neighbours.empty()) return {};
-  for (double& x : n) x /= nn;
+  const detail::Vec3 n = detail::normalized(sum);
+  if (detail::norm(n) == 0 || neighbours.empty()) return {};
   // t1: the axis least aligned with n, made orthogonal; t2 = n × t1.
   std::array<double, 3> t1{0, 0, 0};
   const int axis = std::abs(n[0]) < std::abs(n[1]) ? (std::abs(n[0]) < std::abs(n[2]) ? 0 : 2)
                                                    : (std::abs(n[1]) < std::abs(n[2]) ? 1 : 2);
   t1[axis] = 1;
   for (int d = 0; d < 3; ++d) t1[d] -= n[axis] * n[d];
-  const double l1 = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
-  for (double& x : t1) x /= l1;
-  const std::array<double, 3> t2{n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
-                                 n[0] * t1[1] - n[1] * t1[0]};
+  t1 = detail::normalized(t1);
+  const detail::Vec3 t2 = detail::cross(n, t1);
   double length = 0;
-  for (int w : neighbours) {
-    double l2 = 0;
-    for (int d = 0; d < 3; ++d) l2 += (mesh.vertices[w][d] - at[d]) * (mesh.vertices[w][d] - at[d]);
-    length += std::sqrt(l2) / neighbours.size();
-  }
+  for (int w : neighbours)
+    length += detail::norm(detail::sub(mesh.vertices[w], at)) / neighbours.size();
   std::vector<std::array<double, 3>> probes;
   for (double step : {0.6, 0.3, 0.1, 0.03})
     for (int k = 0; k < 8; ++k) {
@@ -155,18 +149,9 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
     for (int v : mesh.quads[f])
       for (int d = 0; d < 3; ++d) centre[d] += mesh.vertices[v][d] / 4;
     const int c = f < static_cast<int>(mesh.quad_patch.size()) ? mesh.quad_patch[f] : -1;
-    std::array<double, 3> n = detail::newell_normal(mesh, mesh.quads[f]);
-    if (c >= 0 && tree[c]) {
-      const auto& t = layout.mesh.faces[tree[c]->closest(centre).face];
-      const auto &a = layout.mesh.vertices[t[0]], &b = layout.mesh.vertices[t[1]],
-                 &e = layout.mesh.vertices[t[2]];
-      n = {(b[1] - a[1]) * (e[2] - a[2]) - (b[2] - a[2]) * (e[1] - a[1]),
-           (b[2] - a[2]) * (e[0] - a[0]) - (b[0] - a[0]) * (e[2] - a[2]),
-           (b[0] - a[0]) * (e[1] - a[1]) - (b[1] - a[1]) * (e[0] - a[0])};
-    }
-    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    up[f] = l > 0 ? std::array<double, 3>{n[0] / l, n[1] / l, n[2] / l}
-                  : std::array<double, 3>{0, 0, 0};
+    up[f] = detail::normalized(
+        c >= 0 && tree[c] ? detail::triangle_normal(layout.mesh, tree[c]->closest(centre).face)
+                          : detail::newell_normal(mesh, mesh.quads[f]));
   }
   // The worst scaled Jacobian among the quads at v, against the surface's normal and against
   // the quad's own (what metrics.hpp reports).

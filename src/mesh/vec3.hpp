@@ -1,0 +1,33 @@
+// Small 3-vector arithmetic on std::array<double, 3>, shared by the geometry code (mesh.hpp
+// stores positions in that type).
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "bimdf/mesh.hpp"
+
+namespace bimdf::detail {
+
+using Vec3 = std::array<double, 3>;
+
+inline Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+// a / |a|, or zero for the zero vector.
+inline Vec3 normalized(const Vec3& a) {
+  const double n = norm(a);
+  return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
+}
+
+// The (not normalized) normal of triangle f, counter-clockwise.
+inline Vec3 triangle_normal(const TriangleMesh& mesh, int f) {
+  const auto& t = mesh.faces[f];
+  return cross(sub(mesh.vertices[t[1]], mesh.vertices[t[0]]),
+               sub(mesh.vertices[t[2]], mesh.vertices[t[0]]));
+}
+
+}  // namespace bimdf::detail
