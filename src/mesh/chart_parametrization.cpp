@@ -10,7 +10,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "bimdf/quant/pattern.hpp"
+#include "bimdf/quant/quantize.hpp"
 #include "mesh/vec3.hpp"
 
 namespace bimdf::quant::detail {
@@ -31,7 +31,8 @@ double tan_half_angle(const Vec3& u, const Vec3& v) {
 }  // namespace
 
 ChartParametrization parametrize_chart(const Layout& layout, int c,
-                                       const std::vector<int64_t>& lengths) {
+                                       const std::vector<int64_t>& lengths,
+                                       const std::vector<std::array<double, 2>>& corner) {
   const Chart& chart = layout.charts[c];
   const TriangleMesh& mesh = layout.mesh;
   const int k = chart.valence();
@@ -43,15 +44,11 @@ ChartParametrization parametrize_chart(const Layout& layout, int c,
     return it->second;
   };
   // Boundary first, in walking order, pinned to the pattern's polygon.
-  std::vector<int> sides(k, 0);
-  for (int j = 0; j < k; ++j)
-    for (int s : chart.sides[j].subsides) sides[j] += static_cast<int>(lengths[s]);
-  const std::vector<std::array<double, 2>> corner = pattern_polygon(sides);
+  const std::vector<int64_t> sides = side_lengths(layout, c, lengths);
   std::vector<std::array<double, 2>> pinned;
   for (int j = 0; j < k; ++j) {
     const Side& side = chart.sides[j];
-    int64_t side_length = 0;
-    for (int s : side.subsides) side_length += lengths[s];
+    const int64_t side_length = sides[j];
     const auto &p = corner[j], &q = corner[(j + 1) % k];
     int64_t offset = 0;
     for (size_t i = 0; i < side.subsides.size(); ++i) {

@@ -22,9 +22,11 @@ struct ChartParametrization {
   std::vector<std::array<int, 3>> triangles;  // local vertex ids
 };
 
-// Flattens chart `c` given every subside's quantized length.
+// Flattens chart `c` given every subside's quantized length onto `polygon`, the chart's
+// pattern polygon (QuadPattern::polygon: corner j, side j of the chart's side lengths).
 ChartParametrization parametrize_chart(const Layout& layout, int c,
-                                       const std::vector<int64_t>& lengths);
+                                       const std::vector<int64_t>& lengths,
+                                       const std::vector<std::array<double, 2>>& polygon);
 
 // A point of the chart, as a mesh triangle and barycentric coordinates.
 struct SurfacePoint {

@@ -267,7 +267,8 @@ class PatternBuilder {
       perimeter_ += sides[j];
     }
     for (int v = 0; v < perimeter_; ++v) root_.ring.push_back(v);
-    const std::vector<Point> corner = pattern_polygon(sides);
+    corners_ = pattern_polygon(sides);
+    const std::vector<Point>& corner = corners_;
     double length = 0;
     for (int j = 0; j < k; ++j) {
       const Point& p = corner[j];
@@ -289,7 +290,10 @@ class PatternBuilder {
     QuadSoup soup{perimeter_, {}};
     if (detail::add_regular_pattern(root_, soup) && accept(soup, PatternKind::Regular, 0))
       return result_;
-    if (try_cuts() || try_double_cuts()) return result_;
+    // The root's cuts, ranked once for both kinds of attempt.
+    const std::vector<char> no_cut_vertex(perimeter_, 0);
+    const std::vector<Cut> cuts = rank_cuts({root_, boundary_, no_cut_vertex, edge_length_});
+    if (try_cuts(cuts) || try_double_cuts(cuts)) return result_;
     // Last resorts: quads fanned around one new centre vertex (pairs of boundary edges, from
     // an even or odd start), or around a corner.
     std::vector<QuadSoup> fans;
@@ -317,9 +321,8 @@ class PatternBuilder {
  private:
   static constexpr int kCandidates = 40;
 
-  bool try_cuts() {
-    std::vector<char> no_cut_vertex(perimeter_, 0);
-    const std::vector<Cut> cuts = rank_cuts({root_, boundary_, no_cut_vertex, edge_length_});
+  // Cuts into two regular parts.
+  bool try_cuts(const std::vector<Cut>& cuts) {
     int tried = 0;
     for (const Cut& cut : cuts) {
       if (!cut.first_regular || !cut.second_regular) continue;
@@ -335,9 +338,7 @@ class PatternBuilder {
   }
 
   // One part regular, the other cut once more into regular parts.
-  bool try_double_cuts() {
-    std::vector<char> no_cut_vertex(perimeter_, 0);
-    const std::vector<Cut> cuts = rank_cuts({root_, boundary_, no_cut_vertex, edge_length_});
+  bool try_double_cuts(const std::vector<Cut>& cuts) {
     int tried = 0;
     for (const Cut& cut : cuts) {
       if (cut.first_regular && cut.second_regular) continue;
@@ -370,14 +371,15 @@ class PatternBuilder {
     if (!detail::is_disk_with_boundary(soup.quads, soup.next_vertex, root_.ring)) return false;
     std::vector<Point> x = embed(soup.quads, soup.next_vertex, boundary_);
     if (require_convex && !all_convex(soup.quads, x)) return false;
-    result_ = QuadPattern{sides_, soup.quads, std::move(x), kind, cuts};
+    result_ = QuadPattern{sides_, soup.quads, std::move(x), kind, cuts, corners_};
     return true;
   }
 
   std::vector<int> sides_;
   int perimeter_ = 0;
   PatchPolygon root_;
-  std::vector<Point> boundary_;
+  std::vector<Point> corners_;   // pattern_polygon(sides_)
+  std::vector<Point> boundary_;  // ring vertex positions on it
   double edge_length_ = 1;
   QuadPattern result_;
 };

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "bimdf/quant/quantize.hpp"
 #include "mesh/chart_parametrization.hpp"
 
 namespace bimdf::quant {
@@ -97,10 +98,8 @@ Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& length
     if (chart.empty()) continue;
     const int k = chart.valence();
     start = std::chrono::steady_clock::now();
-    std::vector<int> sides(k, 0);
-    for (int j = 0; j < k; ++j)
-      for (int s : chart.sides[j].subsides) sides[j] += static_cast<int>(lengths[s]);
-    const QuadPattern pattern = make_quad_pattern(sides);
+    const std::vector<int64_t> sides = side_lengths(layout, c, lengths);
+    const QuadPattern pattern = make_quad_pattern(std::vector<int>(sides.begin(), sides.end()));
     result.time_patterns_s += seconds_since(start);
 
     start = std::chrono::steady_clock::now();
@@ -116,7 +115,8 @@ Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& length
       }
     }
     if (pattern.perimeter() < pattern.num_vertices()) {
-      const detail::ChartParametrization param = detail::parametrize_chart(layout, c, lengths);
+      const detail::ChartParametrization param =
+          detail::parametrize_chart(layout, c, lengths, pattern.polygon);
       const detail::UvLocator locator(param);
       for (int v = pattern.perimeter(); v < pattern.num_vertices(); ++v) {
         const detail::SurfacePoint p = locator.locate(pattern.positions[v]);

@@ -36,9 +36,10 @@ std::string to_string(PatternKind kind);
 struct QuadPattern {
   std::vector<int> sides;                        // l_j
   std::vector<std::array<int, 4>> quads;         // vertex ids
-  std::vector<std::array<double, 2>> positions;  // in pattern_polygon(sides)
+  std::vector<std::array<double, 2>> positions;  // in `polygon`
   PatternKind kind = PatternKind::Regular;
-  int cuts = 0;  // cut chains used (PatternKind::Cut)
+  int cuts = 0;                                // cut chains used (PatternKind::Cut)
+  std::vector<std::array<double, 2>> polygon;  // pattern_polygon(sides): corner j
 
   int num_vertices() const { return static_cast<int>(positions.size()); }
   int perimeter() const;
@@ -54,8 +55,8 @@ std::vector<std::array<double, 2>> pattern_polygon(const std::vector<int>& sides
 // spaced along each side; interior vertices at the average of their neighbours (Tutte's
 // embedding, which keeps faces convex on the convex polygon). Among the candidate patterns the
 // first whose quads are all convex (no corner turning clockwise) is taken; if none is, the
-// first fan, convex or not (a valid disk of quads all the same). Throws std::invalid_argument if k is outside 3…6, a side is < 1, or the perimeter
-// is odd or < 4.
+// first fan, convex or not (a valid disk of quads all the same). Throws std::invalid_argument if k
+// is outside 3…6, a side is < 1, or the perimeter is odd or < 4.
 QuadPattern make_quad_pattern(const std::vector<int>& sides);
 
 // The regular pattern's strip counts e_j (l_j = e_{j−1} + e_{j+1}; for k = 4, e_0 = l_1 and
