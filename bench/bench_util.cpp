@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -49,6 +50,37 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+MedianRun median_run(const std::string& cli, const std::vector<std::string>& args, int repeats) {
+  std::vector<double> times;
+  std::vector<nlohmann::json> outputs;
+  for (int k = 0; k < repeats; ++k) {
+    outputs.push_back(run_cli(cli, args).solution);
+    times.push_back(outputs.back()["time"]["total_s"].get<double>());
+    if (k == 0 && times.back() > 1.0) repeats = std::min(repeats, 3);
+  }
+  const double mid = median(times);
+  size_t best = 0;
+  for (size_t k = 0; k < times.size(); ++k)
+    if (std::fabs(times[k] - mid) < std::fabs(times[best] - mid)) best = k;
+  return {outputs[best], mid};
+}
+
+std::vector<LayoutReference> read_layout_references(const std::string& dir) {
+  std::vector<LayoutReference> refs;
+  std::ifstream tsv(std::filesystem::path(dir) / "expected.tsv");
+  std::string line;
+  std::getline(tsv, line);  // header
+  while (std::getline(tsv, line)) {
+    std::istringstream row(line);
+    LayoutReference r;
+    int patches;
+    if (row >> r.mesh >> patches >> r.noalign_opt >> r.align_opt >> r.noalign_quads >>
+        r.align_quads)
+      refs.push_back(r);
+  }
+  return refs;
 }
 
 std::string fmt(double v, int precision) {

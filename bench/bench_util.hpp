@@ -19,6 +19,23 @@ Run run_cli(const std::string& cli, const std::vector<std::string>& args);
 
 double median(std::vector<double> v);
 
+// Runs `cli` with `args` `repeats` times (3 when the first run takes over a second) and returns
+// the JSON output of the run whose `time.total_s` is closest to the median, and that median.
+struct MedianRun {
+  nlohmann::json output;
+  double seconds = 0;
+};
+MedianRun median_run(const std::string& cli, const std::vector<std::string>& args, int repeats);
+
+// One row of a shared layouts folder's expected.tsv: the reference quantizer's optima and
+// quad counts without and with alignment.
+struct LayoutReference {
+  std::string mesh;
+  double noalign_opt = 0, align_opt = 0;
+  int noalign_quads = 0, align_quads = 0;
+};
+std::vector<LayoutReference> read_layout_references(const std::string& dir);
+
 // Fixed-point text, "–" for NaN.
 std::string fmt(double v, int precision = 3);
 

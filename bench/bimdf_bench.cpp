@@ -23,8 +23,9 @@
 #include "bimdf/generate.hpp"
 #include "bimdf/io.hpp"
 #include "layout_bench.hpp"
-#include "remesh_bench.hpp"
+#include "markdown_table.hpp"
 #include "milp_model.hpp"
+#include "remesh_bench.hpp"
 
 namespace {
 
@@ -46,13 +47,7 @@ std::map<std::string, std::pair<double, double>> read_libsatsuma_times(const fs:
   std::map<std::string, std::pair<double, double>> times;
   std::ifstream in(readme);
   for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::istringstream row(line);
-    for (std::string cell; std::getline(row, cell, '|');) {
-      cell.erase(0, cell.find_first_not_of(' '));
-      cell.erase(cell.find_last_not_of(' ') + 1);
-      cells.push_back(cell);
-    }
+    const std::vector<std::string> cells = markdown_cells(line);
     // A leading empty cell comes from the row's first '|'.
     if (cells.size() < 8 || cells[1].size() < 7 || !cells[1].ends_with(".bimdf")) continue;
     try {

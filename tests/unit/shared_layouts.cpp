@@ -5,6 +5,8 @@
 #include <map>
 #include <sstream>
 
+#include "markdown_table.hpp"
+
 namespace bimdf::testing {
 
 std::vector<Reference> references() {
@@ -22,13 +24,7 @@ std::vector<Reference> references() {
     if (row >> mesh >> patches >> a >> b) exact_noalign[mesh] = a, exact_align[mesh] = b;
   }
   while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::istringstream row(line);
-    for (std::string cell; std::getline(row, cell, '|');) {
-      cell.erase(0, cell.find_first_not_of(' '));
-      cell.erase(cell.find_last_not_of(' ') + 1);
-      cells.push_back(cell);
-    }
+    const std::vector<std::string> cells = bench::markdown_cells(line);
     if (cells.size() < 14 || !exact_noalign.count(cells[1])) continue;
     Reference r;
     r.mesh = cells[1];
