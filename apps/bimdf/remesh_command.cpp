@@ -153,6 +153,7 @@ TessellationReport report_metrics(const QuadMeshMetrics& m) {
            {"mean", m.scaled_jacobian_mean},
            {"p5", m.scaled_jacobian_p5}}},
          {"inverted", m.inverted},
+         {"degenerate", m.degenerate},
          {"base_complex_faces", m.base_complex_faces}};
   if (m.hausdorff >= 0) {
     r.j["hausdorff"] = m.hausdorff;
@@ -172,7 +173,7 @@ TessellationReport report_metrics(const QuadMeshMetrics& m) {
     << valence_list(m.boundary_singularities) << "\n";
   s << "scaled Jac.   min " << number(m.scaled_jacobian_min) << ", mean "
     << number(m.scaled_jacobian_mean) << ", 5th percentile " << number(m.scaled_jacobian_p5) << "; "
-    << m.inverted << " inverted\n";
+    << m.inverted << " inverted, " << m.degenerate << " degenerate\n";
   s << "base complex  " << m.base_complex_faces << " patches\n";
   if (m.hausdorff >= 0)
     s << "distance      Hausdorff " << number(m.hausdorff) << " ("

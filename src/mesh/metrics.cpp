@@ -97,6 +97,7 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
     sj[f] = detail::scaled_jacobian(mesh, mesh.quads[f]);
     sum += sj[f];
     m.inverted += sj[f] < 0;
+    m.degenerate += sj[f] == 0;
   }
   if (nf > 0) {
     m.scaled_jacobian_mean = sum / nf;

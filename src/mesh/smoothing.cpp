@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -12,6 +13,8 @@
 #include "bimdf/quant/tessellate.hpp"
 #include "mesh/closest_point.hpp"
 #include "mesh/quad_quality.hpp"
+#include "mesh/untangle.hpp"
+#include "mesh/vec3.hpp"
 
 namespace bimdf::quant {
 namespace {
@@ -21,39 +24,66 @@ constexpr double kGoodEnough = 0.5;
 // Vertices whose worst quad is worse than this get the local search.
 constexpr double kBad = 0.2;
 
-// Points around `at` in the plane of the quads `quads`: 8 directions, 3 distances relative to
-// the mean length of the edges to `neighbours`.
-std::vector<std::array<double, 3>> tangent_probes(const QuadMesh& mesh,
-                                                  const std::vector<int>& quads,
-                                                  const std::vector<int>& neighbours,
-                                                  const std::array<double, 3>& at) {
+// An orthonormal frame (t1, t2) of the plane of the quads `quads` at a vertex (their summed
+// Newell normal), or nothing when that normal vanishes.
+std::optional<std::array<detail::Vec3, 2>> tangent_frame(const QuadMesh& mesh,
+                                                         const std::vector<int>& quads) {
   detail::Vec3 sum{0, 0, 0};
   for (int f : quads) {
     const detail::Vec3 q = detail::newell_normal(mesh, mesh.quads[f]);
     for (int d = 0; d < 3; ++d) sum[d] += q[d];
   }
   const detail::Vec3 n = detail::normalized(sum);
-  if (detail::norm(n) == 0 || neighbours.empty()) return {};
+  if (detail::norm(n) == 0) return std::nullopt;
   // t1: the axis least aligned with n, made orthogonal; t2 = n × t1.
-  std::array<double, 3> t1{0, 0, 0};
+  detail::Vec3 t1{0, 0, 0};
   const int axis = std::abs(n[0]) < std::abs(n[1]) ? (std::abs(n[0]) < std::abs(n[2]) ? 0 : 2)
                                                    : (std::abs(n[1]) < std::abs(n[2]) ? 1 : 2);
   t1[axis] = 1;
   for (int d = 0; d < 3; ++d) t1[d] -= n[axis] * n[d];
   t1 = detail::normalized(t1);
-  const detail::Vec3 t2 = detail::cross(n, t1);
+  return std::array<detail::Vec3, 2>{t1, detail::cross(n, t1)};
+}
+
+// The mean distance from `at` to `neighbours`.
+double mean_distance(const QuadMesh& mesh, const std::vector<int>& neighbours,
+                     const detail::Vec3& at) {
   double length = 0;
   for (int w : neighbours)
     length += detail::norm(detail::sub(mesh.vertices[w], at)) / neighbours.size();
-  std::vector<std::array<double, 3>> probes;
+  return length;
+}
+
+// Points around `at` in the tangent plane `frame`: 8 directions, 4 distances relative to
+// `length`.
+std::vector<detail::Vec3> tangent_probes(const std::array<detail::Vec3, 2>& frame,
+                                         const detail::Vec3& at, double length) {
+  const auto& [t1, t2] = frame;
+  std::vector<detail::Vec3> probes;
   for (double step : {0.6, 0.3, 0.1, 0.03})
     for (int k = 0; k < 8; ++k) {
       const double c = std::cos(k * std::numbers::pi / 4), s = std::sin(k * std::numbers::pi / 4);
-      std::array<double, 3> p;
+      detail::Vec3 p;
       for (int d = 0; d < 3; ++d) p[d] = at[d] + step * length * (c * t1[d] + s * t2[d]);
       probes.push_back(p);
     }
   return probes;
+}
+
+// Two curves meeting at a vertex continue each other when the cosine of their turn there is
+// at least this (turning by less than 30°).
+const double kStraightCosine = std::cos(std::numbers::pi / 6);
+
+// The cosine of the turn from polyline `in` (ending at a vertex) to `out` (starting there),
+// each direction taken over up to 3 segments so that tiny mesh edges do not decide it.
+double turning_cosine(const Layout& layout, const std::vector<int>& in,
+                      const std::vector<int>& out) {
+  const auto& x = layout.mesh.vertices;
+  const detail::Vec3 a = detail::normalized(
+      detail::sub(x[in.back()], x[in[in.size() - std::min<size_t>(in.size(), 4)]]));
+  const detail::Vec3 b =
+      detail::normalized(detail::sub(x[out[std::min<size_t>(out.size() - 1, 3)]], x[out.front()]));
+  return detail::dot(a, b);
 }
 
 // The point of a mesh polyline closest to p (face −1).
@@ -94,21 +124,51 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
         return false;
     return true;
   };
-  // Mesh vertices that stay: feature corners and the ends of border and feature subsides.
-  std::vector<char> pinned(layout.mesh.num_vertices(), 0);
-  for (int v : layout.feature_corners) pinned[v] = 1;
-  std::vector<char> subside_free(layout.subsides.size(), 0);
-  for (size_t s = 0; s < layout.subsides.size(); ++s) {
+  // Border and feature subsides are curves their vertices slide along; so are the joints
+  // where two of them continue each other (curve_polylines[s] is subside s's polyline, the
+  // joints' follow).
+  const int num_subsides = static_cast<int>(layout.subsides.size());
+  std::vector<char> subside_free(num_subsides, 0);
+  std::vector<std::vector<int>> curve_polylines(num_subsides);
+  std::vector<std::vector<int>> curves_ending_at(layout.mesh.num_vertices());
+  for (int s = 0; s < num_subsides; ++s) {
     const Subside& sub = layout.subsides[s];
     subside_free[s] = !sub.on_border() && !on_feature(sub);
-    if (!subside_free[s]) pinned[sub.vertices.front()] = pinned[sub.vertices.back()] = 1;
+    curve_polylines[s] = sub.vertices;
+    if (subside_free[s]) continue;
+    curves_ending_at[sub.vertices.front()].push_back(s);
+    if (sub.vertices.back() != sub.vertices.front())
+      curves_ending_at[sub.vertices.back()].push_back(s);
+  }
+  // Mesh vertices that stay: feature corners and the other ends of curves. A vertex where
+  // exactly two curves meet almost straight is a T-junction or chart corner placed on a
+  // feature line, not a corner of it: it slides along the two (joint_curve).
+  std::vector<char> pinned(layout.mesh.num_vertices(), 0);
+  std::vector<int> joint_curve(layout.mesh.num_vertices(), -1);
+  std::vector<char> feature_corner(layout.mesh.num_vertices(), 0);
+  for (int v : layout.feature_corners) feature_corner[v] = 1;
+  for (int m = 0; m < layout.mesh.num_vertices(); ++m) {
+    const std::vector<int>& ends = curves_ending_at[m];
+    if (ends.empty() && !feature_corner[m]) continue;
+    pinned[m] = 1;
+    if (feature_corner[m] || ends.size() != 2) continue;
+    // The chain through m: the first curve towards m, then the second away from it.
+    std::vector<int> in = curve_polylines[ends[0]], out = curve_polylines[ends[1]];
+    if (in.back() != m) std::reverse(in.begin(), in.end());
+    if (out.front() != m) std::reverse(out.begin(), out.end());
+    if (in.back() != m || out.front() != m || in.size() < 2 || out.size() < 2) continue;
+    if (turning_cosine(layout, in, out) < kStraightCosine) continue;
+    in.insert(in.end(), out.begin() + 1, out.end());
+    pinned[m] = 0;
+    joint_curve[m] = static_cast<int>(curve_polylines.size());
+    curve_polylines.push_back(std::move(in));
   }
   std::vector<std::set<int>> charts_at(layout.mesh.num_vertices());
   for (int f = 0; f < layout.mesh.num_faces(); ++f)
     for (int v : layout.mesh.faces[f])
       if (layout.face_chart[f] >= 0) charts_at[v].insert(layout.face_chart[f]);
-  // The charts each vertex may move on (empty: fixed or on a curve); the feature or border
-  // subside a vertex slides along (−1: none).
+  // The charts each vertex may move on (empty: fixed or on a curve); the curve a vertex
+  // slides along (an index into curve_polylines; −1: none).
   std::vector<std::vector<int>> charts(nv);
   std::vector<int> curve(nv, -1);
   for (int v = 0; v < nv; ++v) {
@@ -119,7 +179,9 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
       const Subside& s = layout.subsides[o.subside];
       charts[v] = {s.charts[0], s.charts[1]};
     }
-    if (o.mesh_vertex >= 0 && !pinned[o.mesh_vertex])
+    if (o.mesh_vertex >= 0 && joint_curve[o.mesh_vertex] >= 0)
+      curve[v] = joint_curve[o.mesh_vertex];
+    else if (o.mesh_vertex >= 0 && !pinned[o.mesh_vertex])
       charts[v].assign(charts_at[o.mesh_vertex].begin(), charts_at[o.mesh_vertex].end());
   }
   std::vector<std::unique_ptr<detail::TriangleTree>> tree(layout.charts.size());
@@ -155,69 +217,87 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
   }
   // The worst scaled Jacobian among the quads at v, against the surface's normal and against
   // the quad's own (what metrics.hpp reports).
+  // A quad with two coincident corners (adjacent or diagonal) counts as −1: the scaled Jacobian
+  // calls it 0, which would let a vertex collapse onto its neighbour to escape an inverted quad.
   const auto quality = [&](int v) {
     double worst = 1;
-    for (int f : vertex_quads[v])
-      worst = std::min({worst, detail::scaled_jacobian(mesh, mesh.quads[f], up[f]),
-                        detail::scaled_jacobian(mesh, mesh.quads[f])});
+    for (int f : vertex_quads[v]) {
+      const std::array<int, 4>& q = mesh.quads[f];
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b)
+          if (mesh.vertices[q[a]] == mesh.vertices[q[b]]) return -1.0;
+      worst = std::min(
+          {worst, detail::scaled_jacobian(mesh, q, up[f]), detail::scaled_jacobian(mesh, q)});
+    }
     return worst;
   };
-  for (int iteration = 0; iteration < options.iterations; ++iteration) {
-    for (int v = 0; v < nv; ++v) {
-      if ((charts[v].empty() && curve[v] < 0) || neighbours[v].empty()) continue;
-      // Half the umbrella mean, half the mean of where each quad at v would put v if it were
-      // a parallelogram (the corner opposite v mirrored through the other two).
-      std::array<double, 3> mean{0, 0, 0};
-      for (int w : neighbours[v])
-        for (int d = 0; d < 3; ++d) mean[d] += 0.5 * mesh.vertices[w][d] / neighbours[v].size();
-      for (const auto& [a, b, c] : corners[v])
-        for (int d = 0; d < 3; ++d)
-          mean[d] += 0.5 * (mesh.vertices[a][d] + mesh.vertices[c][d] - mesh.vertices[b][d]) /
-                     corners[v].size();
-      // p back on the surface: on v's curve, or on its charts' triangles.
-      const auto project = [&](const std::array<double, 3>& p) {
-        detail::TriangleTree::Hit best;
-        best.distance = -1;
-        if (curve[v] >= 0)
-          best = closest_on_polyline(layout, layout.subsides[curve[v]].vertices, p);
-        for (int c : charts[v]) {
-          if (!tree[c]) continue;
-          const detail::TriangleTree::Hit hit = tree[c]->closest(p);
-          if (best.distance < 0 || hit.distance < best.distance) best = hit;
-        }
-        return best.distance >= 0 ? best.point : p;
-      };
-      const std::array<double, 3> old = mesh.vertices[v];
-      // Where v would go with a step of `damping` towards the mean.
-      const auto candidate = [&](double damping) {
-        std::array<double, 3> p;
-        for (int d = 0; d < 3; ++d) p[d] = (1 - damping) * old[d] + damping * mean[d];
-        return project(p);
-      };
-      // Moves in place, and only if the quads at v stay as good as they were or good enough:
-      // smoothing never creates an inverted quad and never worsens the worst one. Where the
-      // quads at v are bad, longer and shorter steps are tried too, and then a local search
-      // in the tangent plane for the position that makes the worst quad best.
-      const double before = quality(v);
-      std::array<double, 3> chosen = old;
-      double chosen_quality = -2;
-      if (before < kBad) {
-        for (const std::array<double, 3>& p :
-             tangent_probes(mesh, vertex_quads[v], neighbours[v], old)) {
-          mesh.vertices[v] = project(p);
-          const double q = quality(v);
-          if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
+  // One relaxation step of vertex v.
+  const auto relax = [&](int v) {
+    if ((charts[v].empty() && curve[v] < 0) || neighbours[v].empty()) return;
+    // Half the umbrella mean, half the mean of where each quad at v would put v if it were
+    // a parallelogram (the corner opposite v mirrored through the other two).
+    std::array<double, 3> mean{0, 0, 0};
+    for (int w : neighbours[v])
+      for (int d = 0; d < 3; ++d) mean[d] += 0.5 * mesh.vertices[w][d] / neighbours[v].size();
+    for (const auto& [a, b, c] : corners[v])
+      for (int d = 0; d < 3; ++d)
+        mean[d] += 0.5 * (mesh.vertices[a][d] + mesh.vertices[c][d] - mesh.vertices[b][d]) /
+                   corners[v].size();
+    // p back on the surface: on v's curve, or on its charts' triangles.
+    const auto project = [&](const std::array<double, 3>& p) {
+      detail::TriangleTree::Hit best;
+      best.distance = -1;
+      if (curve[v] >= 0) best = closest_on_polyline(layout, curve_polylines[curve[v]], p);
+      for (int c : charts[v]) {
+        if (!tree[c]) continue;
+        const detail::TriangleTree::Hit hit = tree[c]->closest(p);
+        if (best.distance < 0 || hit.distance < best.distance) best = hit;
+      }
+      return best.distance >= 0 ? best.point : p;
+    };
+    const std::array<double, 3> old = mesh.vertices[v];
+    // Where v would go with a step of `damping` towards the mean.
+    const auto candidate = [&](double damping) {
+      std::array<double, 3> p;
+      for (int d = 0; d < 3; ++d) p[d] = (1 - damping) * old[d] + damping * mean[d];
+      return project(p);
+    };
+    // Moves in place, and only if the quads at v stay as good as they were or good enough:
+    // smoothing never creates an inverted quad and never worsens the worst one. Where the
+    // quads at v are bad, longer and shorter steps are tried too, and then a local search
+    // in the tangent plane for the position that makes the worst quad best.
+    const double before = quality(v);
+    std::array<double, 3> chosen = old;
+    double chosen_quality = -2;
+    const auto consider = [&](const detail::Vec3& p) {
+      mesh.vertices[v] = project(p);
+      const double q = quality(v);
+      if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
+    };
+    if (before < kBad) {
+      const auto frame = tangent_frame(mesh, vertex_quads[v]);
+      const double length = mean_distance(mesh, neighbours[v], old);
+      if (frame && length > 0) {
+        for (const detail::Vec3& p : tangent_probes(*frame, old, length)) consider(p);
+        // The exact best position for the quads' corner areas, and half-way there.
+        mesh.vertices[v] = old;
+        if (const auto p = detail::max_min_corner_position(mesh, v, vertex_quads[v], up,
+                                                           (*frame)[0], (*frame)[1], length)) {
+          consider(*p);
+          consider({(p->at(0) + old[0]) / 2, (p->at(1) + old[1]) / 2, (p->at(2) + old[2]) / 2});
         }
       }
-      for (double damping : {options.damping, 1.0, 0.25}) {
-        mesh.vertices[v] = candidate(damping);
-        const double q = quality(v);
-        if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
-        if (before >= kGoodEnough) break;
-      }
-      mesh.vertices[v] = chosen_quality >= std::min(before, kGoodEnough) ? chosen : old;
     }
-  }
+    for (double damping : {options.damping, 1.0, 0.25}) {
+      mesh.vertices[v] = candidate(damping);
+      const double q = quality(v);
+      if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
+      if (before >= kGoodEnough) break;
+    }
+    mesh.vertices[v] = chosen_quality >= std::min(before, kGoodEnough) ? chosen : old;
+  };
+  for (int iteration = 0; iteration < options.iterations; ++iteration)
+    for (int v = 0; v < nv; ++v) relax(v);
 }
 
 }  // namespace bimdf::quant

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bimdf/error.hpp"
+#include "bimdf/mesh.hpp"
 
 namespace bimdf::testing {
 
@@ -21,6 +22,19 @@ inline std::string input_error_of(const std::function<void()>& f) {
   }
   ADD_FAILURE() << "expected an InputError";
   return {};
+}
+
+// A 2 × 2 grid of unit quads in the plane z = 0, vertex 3·y + x at (x, y); the lower two
+// quads are patch 0, the upper two patch 1.
+inline QuadMesh quad_grid_2x2() {
+  QuadMesh m;
+  for (int y = 0; y <= 2; ++y)
+    for (int x = 0; x <= 2; ++x) m.vertices.push_back({double(x), double(y), 0});
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x)
+      m.quads.push_back({3 * y + x, 3 * y + x + 1, 3 * y + x + 4, 3 * y + x + 3});
+  m.quad_patch = {0, 0, 1, 1};
+  return m;
 }
 
 // `count` scaled by the environment variable BIMDF_TEST_SCALE (default 1): the sanitizer run in

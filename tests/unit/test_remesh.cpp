@@ -119,6 +119,7 @@ void expect_good_remesh(const Layout& layout, const Remeshed& r, const std::stri
   EXPECT_LT(smooth.hausdorff_relative, 0.02) << name;
   EXPECT_GE(smooth.scaled_jacobian_min, std::min(raw.scaled_jacobian_min, 0.5)) << name;
   EXPECT_LE(smooth.inverted, raw.inverted) << name;
+  EXPECT_EQ(smooth.degenerate, 0) << name;
   EXPECT_GT(smooth.scaled_jacobian_mean, raw.scaled_jacobian_mean) << name;
 }
 
@@ -171,17 +172,7 @@ TEST(Remesh, LengthsThatAdmitNoPatternAreRejected) {
                                   ", expected an even number of at least 4");
 }
 
-// A 2 × 2 grid in the plane z = 0 and the same square as two triangles.
-QuadMesh grid() {
-  QuadMesh m;
-  for (int y = 0; y <= 2; ++y)
-    for (int x = 0; x <= 2; ++x) m.vertices.push_back({double(x), double(y), 0});
-  for (int y = 0; y < 2; ++y)
-    for (int x = 0; x < 2; ++x)
-      m.quads.push_back({3 * y + x, 3 * y + x + 1, 3 * y + x + 4, 3 * y + x + 3});
-  m.quad_patch = {0, 0, 1, 1};
-  return m;
-}
+QuadMesh grid() { return testing::quad_grid_2x2(); }
 
 TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
   TriangleMesh square{{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}};
@@ -201,6 +192,7 @@ TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
   EXPECT_NEAR(m.hausdorff_relative, 0.5 / std::sqrt(8.0), 1e-15);
   EXPECT_EQ(m.flipped, 0);
   EXPECT_EQ(m.inverted, 0);
+  EXPECT_EQ(m.degenerate, 0);
   EXPECT_LT(m.scaled_jacobian_min, 1);
 
   QuadMesh turned = grid();
@@ -226,6 +218,12 @@ TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
   QuadMesh folded = grid();
   folded.vertices[0] = {1.5, 1.5, 0};
   EXPECT_EQ(measure_quad_mesh(folded).inverted, 1);
+  EXPECT_EQ(measure_quad_mesh(folded).degenerate, 0);
+  // Moving a corner onto its neighbour: degenerate, not inverted.
+  QuadMesh collapsed = grid();
+  collapsed.vertices[0] = collapsed.vertices[1];
+  EXPECT_EQ(measure_quad_mesh(collapsed).degenerate, 1);
+  EXPECT_EQ(measure_quad_mesh(collapsed).inverted, 0);
   QuadMesh bad = grid();
   bad.quads.push_back({0, 1, 4, 3});
   EXPECT_EQ(measure_quad_mesh(bad).non_manifold_edges, 4);

@@ -46,8 +46,13 @@ struct Tessellation {
 // Smoothing after stitching (note §4.2): `iterations` rounds in which every free vertex moves
 // `damping` of the way to the mean of its neighbours and is projected back onto the closest
 // point of the input surface among the triangles of its chart(s). Vertices on subsides along
-// the mesh border or along feature edges (NAME.feature), those subsides' ends, and feature
-// corners (NAME.c_feature) stay: feature curves and corners keep their place. 0 iterations:
+// the mesh border or along feature edges (NAME.feature) slide along them; so do the subsides'
+// ends where exactly two such subsides continue each other (turning by less than 30°). Other
+// ends and feature corners (NAME.c_feature) stay: feature curves and corners keep their
+// place. A move is kept only if it does not make the vertex's worst quad (scaled Jacobian)
+// worse than min(its worst before, 0.5), and never if it makes two corners of a quad
+// coincide; vertices with a quad below 0.2 also try sampled positions in their tangent plane
+// and the position that maximizes their smallest corner area (untangle.hpp). 0 iterations:
 // no smoothing.
 struct SmoothingOptions {
   int iterations = 30;

@@ -1,0 +1,110 @@
+#include "mesh/untangle.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "mesh/vec3.hpp"
+
+namespace bimdf::detail {
+namespace {
+
+// a + x·b (3-vectors).
+Vec3 along(const Vec3& a, double x, const Vec3& b) {
+  return {a[0] + x * b[0], a[1] + x * b[1], a[2] + x * b[2]};
+}
+
+// value(x, y) = c + gx·x + gy·y.
+struct Linear {
+  double c, gx, gy;
+  double at(double x, double y) const { return c + gx * x + gy * y; }
+};
+
+}  // namespace
+
+std::optional<std::array<double, 3>> max_min_corner_position(
+    const QuadMesh& mesh, int v, const std::vector<int>& quads,
+    const std::vector<std::array<double, 3>>& normals, const std::array<double, 3>& t1,
+    const std::array<double, 3>& t2, double radius) {
+  const Vec3 at = mesh.vertices[v];
+  // Objectives: the corners of the quads at v that touch v (the corner at v and its two
+  // neighbours along the quad). The signed area cross(next − c, prev − c)·n is exactly linear
+  // in v's position, so three evaluations give its coefficients.
+  std::vector<Linear> area;
+  for (int f : quads) {
+    const std::array<int, 4>& q = mesh.quads[f];
+    int k = 0;
+    while (q[k] != v) ++k;
+    for (int corner : {k, (k + 1) % 4, (k + 3) % 4}) {
+      const auto value = [&](const Vec3& p) {
+        const auto position = [&](int i) { return q[i] == v ? p : mesh.vertices[q[i]]; };
+        const Vec3 c = position(corner);
+        const Vec3 e1 = sub(position((corner + 1) % 4), c);
+        const Vec3 e2 = sub(position((corner + 3) % 4), c);
+        return dot(cross(e1, e2), normals[f]);
+      };
+      const Vec3 c = mesh.vertices[q[corner]];
+      const double scale = norm(sub(mesh.vertices[q[(corner + 1) % 4]], c)) *
+                           norm(sub(mesh.vertices[q[(corner + 3) % 4]], c));
+      if (scale == 0) continue;
+      const double v0 = value(at);
+      area.push_back({v0 / scale, (value(along(at, 1, t1)) - v0) / scale,
+                      (value(along(at, 1, t2)) - v0) / scale});
+    }
+  }
+  if (area.empty()) return std::nullopt;
+  // The disk as 16 half-planes gx·x + gy·y ≤ radius·cos(π/16) (hard constraints).
+  constexpr int kSides = 16;
+  std::vector<Linear> disk;
+  for (int i = 0; i < kSides; ++i) {
+    const double angle = 2 * std::numbers::pi * i / kSides;
+    disk.push_back({radius * std::cos(std::numbers::pi / kSides), -std::cos(angle),
+                    -std::sin(angle)});  // ≥ 0 inside
+  }
+  const auto objective = [&](double x, double y) {
+    double worst = std::numeric_limits<double>::infinity();
+    for (const Linear& a : area) worst = std::min(worst, a.at(x, y));
+    return worst;
+  };
+  const auto inside = [&](double x, double y) {
+    for (const Linear& d : disk)
+      if (d.at(x, y) < -1e-9 * radius) return false;
+    return true;
+  };
+  // The LP's optimum is a vertex of the arrangement: where three objectives are equal, two
+  // are equal on a side of the disk, or one meets a corner of the disk. Enumerate them all
+  // (a vertex has at most ~20 corners, so a few thousand small solves).
+  double best_value = objective(0, 0), best_x = 0, best_y = 0;
+  const auto consider = [&](double x, double y) {
+    if (!std::isfinite(x) || !std::isfinite(y) || !inside(x, y)) return;
+    const double value = objective(x, y);
+    if (value > best_value) best_value = value, best_x = x, best_y = y;
+  };
+  const auto solve2 = [&](double a, double b, double c, double d, double e, double f) {
+    // a·x + b·y = e, c·x + d·y = f.
+    const double det = a * d - b * c;
+    if (std::abs(det) < 1e-300) return;
+    consider((e * d - b * f) / det, (a * f - e * c) / det);
+  };
+  const int n = static_cast<int>(area.size());
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      // area_i = area_j, and area_j = area_k or a disk side active.
+      const Linear& a = area[i];
+      const Linear& b = area[j];
+      for (int k = j + 1; k < n; ++k) {
+        const Linear& c = area[k];
+        solve2(a.gx - b.gx, a.gy - b.gy, b.gx - c.gx, b.gy - c.gy, b.c - a.c, c.c - b.c);
+      }
+      for (const Linear& d : disk) solve2(a.gx - b.gx, a.gy - b.gy, d.gx, d.gy, b.c - a.c, -d.c);
+    }
+  for (int s = 0; s < kSides; ++s) {
+    const Linear& d = disk[s];
+    const Linear& e = disk[(s + 1) % kSides];
+    solve2(d.gx, d.gy, e.gx, e.gy, -d.c, -e.c);  // the 16-gon's corners
+  }
+  if (best_x == 0 && best_y == 0) return std::nullopt;
+  return along(along(at, best_x, t1), best_y, t2);
+}
+
+}  // namespace bimdf::detail

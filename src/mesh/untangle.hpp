@@ -1,0 +1,29 @@
+// The untangling step of smoothing: the position of one vertex, within a disk of its tangent
+// plane, that maximizes the smallest corner area of its quads (Freitag and Plassmann's local
+// untangling, "Local optimization-based simplicial mesh untangling and improvement", 2000,
+// carried over to quads). Every corner's signed area, measured against a fixed normal per quad,
+// is linear in the vertex's position, so the best position is the optimum of a small linear
+// program in (x, y, t): maximize t subject to area_i(x, y) ≥ t. Unlike a search among sampled
+// positions it finds the exact optimum, and so the untangled position whenever one exists.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "bimdf/mesh.hpp"
+
+namespace bimdf::detail {
+
+// Among the points p = at + x·t1 + y·t2 with x² + y² ≤ radius² (t1, t2 orthonormal), the one
+// at which the smallest signed corner area of the quads `quads` of `mesh` (all containing
+// vertex `v`; quad f's corners signed by `normals[f]`, each divided by the product of its
+// two edge lengths at the current position so that corners weigh like scaled Jacobians) is
+// largest. Only corners whose area depends on v count. nullopt when no quad has such a corner.
+// The disk is approximated by a regular 16-gon.
+std::optional<std::array<double, 3>> max_min_corner_position(
+    const QuadMesh& mesh, int v, const std::vector<int>& quads,
+    const std::vector<std::array<double, 3>>& normals, const std::array<double, 3>& t1,
+    const std::array<double, 3>& t2, double radius);
+
+}  // namespace bimdf::detail
