@@ -25,15 +25,16 @@ std::string benchmark_remesh(const std::string& cli, const std::string& dir, int
               " rev-parse --short HEAD 2>/dev/null || echo unknown")
      << "`; `bimdf remesh LAYOUT.obj -o OUT.obj` with default options (alignment on, 30 "
         "smoothing rounds). Singular: vertices of irregular valence (inside ≠ 4, boundary ≠ 3). "
-        "SJ: scaled Jacobian. Hausdorff: to the input surface, % of its bounding-box diagonal. "
+        "SJ: scaled Jacobian (inverted: < 0; degenerate: exactly 0). Hausdorff: to the input "
+        "surface, % of its bounding-box diagonal. "
         "Times in ms: read + quantize, patterns, mapping (flattening, placing), smoothing, "
         "metrics, total.\n\n";
   md << "| layout | quads | reference quads | diff | patterns regular/cut/fan | singular "
         "(3/5/other) "
-        "| SJ min | SJ mean | SJ p5 | inverted | facing away | Hausdorff % | quantize | patterns "
-        "| mapping | smoothing | metrics | total |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  long long quads = 0, inverted = 0, faces_away = 0;
+        "| SJ min | SJ mean | SJ p5 | inverted | degenerate | facing away | Hausdorff % | quantize "
+        "| patterns | mapping | smoothing | metrics | total |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  long long quads = 0, inverted = 0, degenerate = 0, faces_away = 0;
   double worst_diff = 0, worst_hausdorff = 0, total_s = 0;
   for (const LayoutReference& ref : refs) {
     const std::string& mesh = ref.mesh;
@@ -58,6 +59,7 @@ std::string benchmark_remesh(const std::string& cli, const std::string& dir, int
       }
     quads += q;
     inverted += m["inverted"].get<int>();
+    degenerate += m["degenerate"].get<int>();
     faces_away += m["flipped"].get<int>();
     worst_diff = std::max(worst_diff, std::fabs(diff));
     worst_hausdorff = std::max(worst_hausdorff, m["hausdorff_relative"].get<double>());
@@ -69,7 +71,8 @@ std::string benchmark_remesh(const std::string& cli, const std::string& dir, int
        << fmt(m["scaled_jacobian"]["min"].get<double>(), 3) << " | "
        << fmt(m["scaled_jacobian"]["mean"].get<double>(), 3) << " | "
        << fmt(m["scaled_jacobian"]["p5"].get<double>(), 3) << " | " << m["inverted"] << " | "
-       << m["flipped"] << " | " << fmt(m["hausdorff_relative"].get<double>() * 100, 3) << " | "
+       << m["degenerate"] << " | " << m["flipped"] << " | "
+       << fmt(m["hausdorff_relative"].get<double>() * 100, 3) << " | "
        << fmt((t["read_s"].get<double>() + t["quantize_s"].get<double>()) * 1e3, 1) << " | "
        << ms("patterns_s") << " | " << ms("mapping_s") << " | " << ms("smoothing_s") << " | "
        << ms("metrics_s") << " | " << ms("total_s") << " |\n";
@@ -80,7 +83,8 @@ std::string benchmark_remesh(const std::string& cli, const std::string& dir, int
      << refs.size() << " layouts, " << quads << " quads; quad count within "
      << fmt(worst_diff * 100, 2) << "% of the reference's on every layout; " << inverted
      << " inverted quads (" << fmt(100.0 * inverted / std::max(quads, 1LL), 3) << "%), "
-     << faces_away << " facing away from the surface; largest Hausdorff distance "
+     << degenerate << " degenerate, " << faces_away
+     << " facing away from the surface; largest Hausdorff distance "
      << fmt(worst_hausdorff * 100, 3) << "% of the diagonal; total time " << fmt(total_s, 2)
      << " s.\n";
   return md.str();

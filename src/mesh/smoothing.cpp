@@ -23,6 +23,10 @@ namespace {
 constexpr double kGoodEnough = 0.5;
 // Vertices whose worst quad is worse than this get the local search.
 constexpr double kBad = 0.2;
+// The untangling phase: at most this many rounds over the vertices near inverted quads, with
+// this regularization (untangle.hpp).
+constexpr int kUntangleRounds = 50;
+constexpr double kUntangleDelta = 0.05;
 
 // An orthonormal frame (t1, t2) of the plane of the quads `quads` at a vertex (their summed
 // Newell normal), or nothing when that normal vanishes.
@@ -231,9 +235,41 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
     }
     return worst;
   };
+  // p back on the surface: on v's curve, or on its charts' triangles.
+  const auto project = [&](int v, const std::array<double, 3>& p) {
+    detail::TriangleTree::Hit best;
+    best.distance = -1;
+    if (curve[v] >= 0) best = closest_on_polyline(layout, curve_polylines[curve[v]], p);
+    for (int c : charts[v]) {
+      if (!tree[c]) continue;
+      const detail::TriangleTree::Hit hit = tree[c]->closest(p);
+      if (best.distance < 0 || hit.distance < best.distance) best = hit;
+    }
+    return best.distance >= 0 ? best.point : p;
+  };
+  const auto movable = [&](int v) {
+    return (!charts[v].empty() || curve[v] >= 0) && !neighbours[v].empty();
+  };
+  // Positions around v worth trying where its quads are bad (before projection): samples of
+  // its tangent plane, and the exact best position for its quads' corner areas and half-way
+  // there.
+  const auto search_positions = [&](int v) {
+    std::vector<detail::Vec3> positions;
+    const auto frame = tangent_frame(mesh, vertex_quads[v]);
+    const detail::Vec3 at = mesh.vertices[v];
+    const double length = mean_distance(mesh, neighbours[v], at);
+    if (!frame || length == 0) return positions;
+    positions = tangent_probes(*frame, at, length);
+    if (const auto p = detail::max_min_corner_position(mesh, v, vertex_quads[v], up, (*frame)[0],
+                                                       (*frame)[1], length)) {
+      positions.push_back(*p);
+      positions.push_back({(p->at(0) + at[0]) / 2, (p->at(1) + at[1]) / 2, (p->at(2) + at[2]) / 2});
+    }
+    return positions;
+  };
   // One relaxation step of vertex v.
   const auto relax = [&](int v) {
-    if ((charts[v].empty() && curve[v] < 0) || neighbours[v].empty()) return;
+    if (!movable(v)) return;
     // Half the umbrella mean, half the mean of where each quad at v would put v if it were
     // a parallelogram (the corner opposite v mirrored through the other two).
     std::array<double, 3> mean{0, 0, 0};
@@ -243,24 +279,12 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
       for (int d = 0; d < 3; ++d)
         mean[d] += 0.5 * (mesh.vertices[a][d] + mesh.vertices[c][d] - mesh.vertices[b][d]) /
                    corners[v].size();
-    // p back on the surface: on v's curve, or on its charts' triangles.
-    const auto project = [&](const std::array<double, 3>& p) {
-      detail::TriangleTree::Hit best;
-      best.distance = -1;
-      if (curve[v] >= 0) best = closest_on_polyline(layout, curve_polylines[curve[v]], p);
-      for (int c : charts[v]) {
-        if (!tree[c]) continue;
-        const detail::TriangleTree::Hit hit = tree[c]->closest(p);
-        if (best.distance < 0 || hit.distance < best.distance) best = hit;
-      }
-      return best.distance >= 0 ? best.point : p;
-    };
     const std::array<double, 3> old = mesh.vertices[v];
     // Where v would go with a step of `damping` towards the mean.
     const auto candidate = [&](double damping) {
       std::array<double, 3> p;
       for (int d = 0; d < 3; ++d) p[d] = (1 - damping) * old[d] + damping * mean[d];
-      return project(p);
+      return project(v, p);
     };
     // Moves in place, and only if the quads at v stay as good as they were or good enough:
     // smoothing never creates an inverted quad and never worsens the worst one. Where the
@@ -269,25 +293,12 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
     const double before = quality(v);
     std::array<double, 3> chosen = old;
     double chosen_quality = -2;
-    const auto consider = [&](const detail::Vec3& p) {
-      mesh.vertices[v] = project(p);
-      const double q = quality(v);
-      if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
-    };
-    if (before < kBad) {
-      const auto frame = tangent_frame(mesh, vertex_quads[v]);
-      const double length = mean_distance(mesh, neighbours[v], old);
-      if (frame && length > 0) {
-        for (const detail::Vec3& p : tangent_probes(*frame, old, length)) consider(p);
-        // The exact best position for the quads' corner areas, and half-way there.
-        mesh.vertices[v] = old;
-        if (const auto p = detail::max_min_corner_position(mesh, v, vertex_quads[v], up,
-                                                           (*frame)[0], (*frame)[1], length)) {
-          consider(*p);
-          consider({(p->at(0) + old[0]) / 2, (p->at(1) + old[1]) / 2, (p->at(2) + old[2]) / 2});
-        }
+    if (before < kBad)
+      for (const detail::Vec3& p : search_positions(v)) {
+        mesh.vertices[v] = project(v, p);
+        const double q = quality(v);
+        if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
       }
-    }
     for (double damping : {options.damping, 1.0, 0.25}) {
       mesh.vertices[v] = candidate(damping);
       const double q = quality(v);
@@ -298,6 +309,55 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
   };
   for (int iteration = 0; iteration < options.iterations; ++iteration)
     for (int v = 0; v < nv; ++v) relax(v);
+
+  // Untangling where quads are still inverted: the vertices near them descend the sum of
+  // their quads' untangling energies (untangle.hpp) against both normals. Unlike the
+  // max-min quality above, the sum lets a vertex give up some quality of one quad to make
+  // room for a neighbour, which frees clusters of vertices that block each other.
+  const auto inverted = [&](int f) {
+    return detail::scaled_jacobian(mesh, mesh.quads[f]) < 0 ||
+           detail::scaled_jacobian(mesh, mesh.quads[f], up[f]) < 0;
+  };
+  const auto inverted_at = [&](int v) {
+    int count = 0;
+    for (int f : vertex_quads[v]) count += inverted(f);
+    return count;
+  };
+  const auto energy = [&](int v) {
+    double sum = 0;
+    for (int f : vertex_quads[v]) {
+      const std::array<int, 4>& q = mesh.quads[f];
+      const detail::Vec3 own = detail::normalized(detail::newell_normal(mesh, q));
+      sum += detail::untangling_energy(mesh, q, up[f], kUntangleDelta) +
+             detail::untangling_energy(mesh, q, own, kUntangleDelta);
+    }
+    return sum;
+  };
+  for (int round = 0; round < (options.iterations > 0 ? kUntangleRounds : 0); ++round) {
+    std::set<int> region;
+    for (int f = 0; f < mesh.num_quads(); ++f)
+      if (inverted(f))
+        for (int v : mesh.quads[f])
+          for (int w : neighbours[v]) {
+            region.insert(w);
+            region.insert(neighbours[w].begin(), neighbours[w].end());
+          }
+    if (region.empty()) break;
+    for (int v : region) {
+      if (!movable(v)) continue;
+      const detail::Vec3 old = mesh.vertices[v];
+      detail::Vec3 chosen = old;
+      double lowest = energy(v);
+      const int tangled = inverted_at(v);
+      for (const detail::Vec3& p : search_positions(v)) {
+        mesh.vertices[v] = project(v, p);
+        const double e = energy(v);
+        if (e < lowest && inverted_at(v) <= tangled && quality(v) > -1)
+          lowest = e, chosen = mesh.vertices[v];
+      }
+      mesh.vertices[v] = chosen;
+    }
+  }
 }
 
 }  // namespace bimdf::quant

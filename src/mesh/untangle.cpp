@@ -107,4 +107,22 @@ std::optional<std::array<double, 3>> max_min_corner_position(
   return along(along(at, best_x, t1), best_y, t2);
 }
 
+double untangling_energy(const QuadMesh& mesh, const std::array<int, 4>& quad,
+                         const std::array<double, 3>& normal, double delta) {
+  double energy = 0;
+  for (int a = 0; a < 4; ++a) {
+    const Vec3& c = mesh.vertices[quad[a]];
+    const Vec3 e1 = sub(mesh.vertices[quad[(a + 1) % 4]], c);
+    const Vec3 e2 = sub(mesh.vertices[quad[(a + 3) % 4]], c);
+    const double l1 = dot(e1, e1), l2 = dot(e2, e2);
+    if (l1 == 0 || l2 == 0) return std::numeric_limits<double>::infinity();
+    const double d = delta * std::sqrt(l1 * l2);
+    const double det = dot(cross(e1, e2), normal);
+    const double h2 = det + std::sqrt(det * det + 4 * d * d);  // 2·h(det)
+    if (h2 <= 0) return std::numeric_limits<double>::infinity();
+    energy += (l1 + l2) / h2;
+  }
+  return energy;
+}
+
 }  // namespace bimdf::detail

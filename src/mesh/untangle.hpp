@@ -26,4 +26,14 @@ std::optional<std::array<double, 3>> max_min_corner_position(
     const std::vector<std::array<double, 3>>& normals, const std::array<double, 3>& t1,
     const std::array<double, 3>& t2, double radius);
 
+// The untangling energy of a quad: the sum over its corners of the corner's condition number
+// (|e1|² + |e2|²) / (2·det), where det = (e1 × e2)·normal is replaced by the regularization
+// h(det) = (det + √(det² + 4δ²)) / 2 with δ = `delta`·|e1|·|e2| (Escobar et al., "Simultaneous
+// untangling and smoothing of tetrahedral meshes", 2003). h is positive everywhere, so the
+// energy is finite for inverted corners too and falls as they straighten: minimizing it
+// untangles, and for valid quads (det ≫ δ) it is the usual shape energy (2 for a square
+// corner). Scale-invariant; a corner with a zero-length edge has infinite energy.
+double untangling_energy(const QuadMesh& mesh, const std::array<int, 4>& quad,
+                         const std::array<double, 3>& normal, double delta);
+
 }  // namespace bimdf::detail

@@ -83,5 +83,33 @@ TEST(Untangle, NoCornerDependsOnTheVertex) {
   EXPECT_FALSE(max_min_corner_position(m, 4, {}, {}, {1, 0, 0}, {0, 1, 0}, 1));
 }
 
+TEST(Untangle, EnergyIsTheConditionNumberForValidQuadsAndFiniteForInvertedOnes) {
+  const QuadMesh square = grid_with_centre(1, 1);
+  const Vec3 up{0, 0, 1}, down{0, 0, -1};
+  // A unit square: each corner (1 + 1) / (1 + √(1 + 4δ²)), → 1 as δ → 0.
+  for (double delta : {0.0, 0.05, 0.5})
+    EXPECT_NEAR(untangling_energy(square, square.quads[0], up, delta),
+                4 * 2 / (1 + std::sqrt(1 + 4 * delta * delta)), 1e-15);
+  // Seen from below every corner is inverted: finite with δ > 0, and far larger.
+  EXPECT_TRUE(std::isinf(untangling_energy(square, square.quads[0], down, 0)) ||
+              untangling_energy(square, square.quads[0], down, 0) > 1e300);
+  const double upside_down = untangling_energy(square, square.quads[0], down, 0.05);
+  EXPECT_TRUE(std::isfinite(upside_down));
+  EXPECT_GT(upside_down, 100);
+  // Pulling the centre out of the square tangles its quads; the energy grows all the way.
+  double previous = 0;
+  for (double x : {1.0, 1.5, 1.9, 2.1, 2.5}) {
+    const QuadMesh m = grid_with_centre(x, x);
+    double sum = 0;
+    for (const auto& q : m.quads) sum += untangling_energy(m, q, up, 0.05);
+    EXPECT_GT(sum, previous) << x;
+    previous = sum;
+  }
+  // A zero-length edge: infinite.
+  QuadMesh collapsed = square;
+  collapsed.vertices[4] = collapsed.vertices[1];
+  EXPECT_TRUE(std::isinf(untangling_energy(collapsed, collapsed.quads[0], up, 0.05)));
+}
+
 }  // namespace
 }  // namespace bimdf::detail
