@@ -3,6 +3,7 @@
 // to rather than onto the whole surface, so that on thin parts it cannot jump to the far side.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -27,6 +28,7 @@ constexpr double kBad = 0.2;
 // this regularization (untangle.hpp).
 constexpr int kUntangleRounds = 50;
 constexpr double kUntangleDelta = 0.05;
+constexpr int kNewtonSteps = 5;
 
 // An orthonormal frame (t1, t2) of the plane of the quads `quads` at a vertex (their summed
 // Newell normal), or nothing when that normal vanishes.
@@ -349,11 +351,25 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
       detail::Vec3 chosen = old;
       double lowest = energy(v);
       const int tangled = inverted_at(v);
-      for (const detail::Vec3& p : search_positions(v)) {
+      // The energy at p, +∞ where v would tangle more quads or make corners coincide.
+      const auto allowed_energy = [&](const detail::Vec3& p) {
         mesh.vertices[v] = project(v, p);
-        const double e = energy(v);
-        if (e < lowest && inverted_at(v) <= tangled && quality(v) > -1)
-          lowest = e, chosen = mesh.vertices[v];
+        return inverted_at(v) <= tangled && quality(v) > -1
+                   ? energy(v)
+                   : std::numeric_limits<double>::infinity();
+      };
+      for (const detail::Vec3& p : search_positions(v)) {
+        const double e = allowed_energy(p);
+        if (e < lowest) lowest = e, chosen = mesh.vertices[v];
+      }
+      // From the best sample, Newton steps on the energy.
+      mesh.vertices[v] = chosen;
+      if (const auto frame = tangent_frame(mesh, vertex_quads[v])) {
+        const detail::Vec3 p = detail::descend_in_tangent_plane(
+            allowed_energy, chosen, (*frame)[0], (*frame)[1],
+            mean_distance(mesh, neighbours[v], chosen), kNewtonSteps);
+        const double e = allowed_energy(p);
+        if (e < lowest) lowest = e, chosen = mesh.vertices[v];
       }
       mesh.vertices[v] = chosen;
     }

@@ -107,6 +107,47 @@ std::optional<std::array<double, 3>> max_min_corner_position(
   return along(along(at, best_x, t1), best_y, t2);
 }
 
+std::array<double, 3> descend_in_tangent_plane(
+    const std::function<double(const std::array<double, 3>&)>& energy,
+    const std::array<double, 3>& at, const std::array<double, 3>& t1,
+    const std::array<double, 3>& t2, double length, int iterations) {
+  const auto point = [&](double x, double y) { return along(along(at, x, t1), y, t2); };
+  const auto e = [&](double x, double y) { return energy(point(x, y)); };
+  double x = 0, y = 0, value = e(0, 0);
+  if (!std::isfinite(value)) return at;
+  const double h = 1e-4 * length;
+  for (int it = 0; it < iterations; ++it) {
+    const double xp = e(x + h, y), xm = e(x - h, y), yp = e(x, y + h), ym = e(x, y - h);
+    if (!std::isfinite(xp + xm + yp + ym)) break;
+    const double gx = (xp - xm) / (2 * h), gy = (yp - ym) / (2 * h);
+    const double hxx = (xp - 2 * value + xm) / (h * h), hyy = (yp - 2 * value + ym) / (h * h);
+    const double hxy =
+        (e(x + h, y + h) - e(x + h, y - h) - e(x - h, y + h) + e(x - h, y - h)) / (4 * h * h);
+    const double det = hxx * hyy - hxy * hxy;
+    double sx, sy;
+    if (std::isfinite(det) && hxx > 0 && det > 0) {
+      sx = -(hyy * gx - hxy * gy) / det, sy = -(hxx * gy - hxy * gx) / det;
+    } else {
+      const double g = std::hypot(gx, gy);
+      if (!(g > 0)) break;
+      sx = -gx / g * length / 2, sy = -gy / g * length / 2;
+    }
+    const double s = std::hypot(sx, sy);
+    if (!(s > 0)) break;
+    if (s > length / 2) sx *= length / 2 / s, sy *= length / 2 / s;
+    bool moved = false;
+    for (double t = 1; t > 1e-3; t /= 2) {
+      const double trial = e(x + t * sx, y + t * sy);
+      if (trial < value) {
+        x += t * sx, y += t * sy, value = trial, moved = true;
+        break;
+      }
+    }
+    if (!moved) break;
+  }
+  return point(x, y);
+}
+
 double untangling_energy(const QuadMesh& mesh, const std::array<int, 4>& quad,
                          const std::array<double, 3>& normal, double delta) {
   double energy = 0;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -33,6 +34,16 @@ std::optional<std::array<double, 3>> max_min_corner_position(
 // energy is finite for inverted corners too and falls as they straighten: minimizing it
 // untangles, and for valid quads (det ≫ δ) it is the usual shape energy (2 for a square
 // corner). Scale-invariant; a corner with a zero-length edge has infinite energy.
+// Newton's method with a backtracking line search for a local minimum of `energy` over the
+// points at + x·t1 + y·t2, starting at (0, 0): derivatives by central differences with step
+// 10⁻⁴·`length`, steps at most `length`/2 (a gradient step where the Hessian is not positive
+// definite), at most `iterations` steps. `energy` may return +∞ for forbidden points. Returns
+// the best point found (`at` when no step lowered the energy).
+std::array<double, 3> descend_in_tangent_plane(
+    const std::function<double(const std::array<double, 3>&)>& energy,
+    const std::array<double, 3>& at, const std::array<double, 3>& t1,
+    const std::array<double, 3>& t2, double length, int iterations);
+
 double untangling_energy(const QuadMesh& mesh, const std::array<int, 4>& quad,
                          const std::array<double, 3>& normal, double delta);
 

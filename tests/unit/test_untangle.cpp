@@ -111,5 +111,29 @@ TEST(Untangle, EnergyIsTheConditionNumberForValidQuadsAndFiniteForInvertedOnes) 
   EXPECT_TRUE(std::isinf(untangling_energy(collapsed, collapsed.quads[0], up, 0.05)));
 }
 
+TEST(Untangle, NewtonDescentFindsTheMinimumAndAvoidsForbiddenPoints) {
+  const Vec3 at{1, 2, 3}, t1{0, 1, 0}, t2{0, 0, 1};
+  // An anisotropic bowl around (1, 2.3, 2.8): Newton lands on it.
+  const auto bowl = [](const Vec3& p) {
+    return 5 * (p[1] - 2.3) * (p[1] - 2.3) + (p[2] - 2.8) * (p[2] - 2.8) +
+           (p[1] - 2.3) * (p[2] - 2.8);
+  };
+  const Vec3 p = descend_in_tangent_plane(bowl, at, t1, t2, 1.0, 5);
+  EXPECT_NEAR(p[0], 1, 1e-12);
+  EXPECT_NEAR(p[1], 2.3, 1e-6);
+  EXPECT_NEAR(p[2], 2.8, 1e-6);
+  // The same bowl with everything beyond y = 2.1 forbidden: it stops short, lower than it
+  // started, and never in the forbidden part.
+  const auto fenced = [&](const Vec3& q) {
+    return q[1] > 2.1 ? std::numeric_limits<double>::infinity() : bowl(q);
+  };
+  const Vec3 r = descend_in_tangent_plane(fenced, at, t1, t2, 1.0, 20);
+  EXPECT_LE(r[1], 2.1);
+  EXPECT_LT(bowl(r), bowl(at));
+  // A forbidden start: nothing moves.
+  const auto nowhere = [](const Vec3&) { return std::numeric_limits<double>::infinity(); };
+  EXPECT_EQ(descend_in_tangent_plane(nowhere, at, t1, t2, 1.0, 5), at);
+}
+
 }  // namespace
 }  // namespace bimdf::detail
