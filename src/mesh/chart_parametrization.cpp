@@ -32,7 +32,8 @@ double tan_half_angle(const Vec3& u, const Vec3& v) {
 
 ChartParametrization parametrize_chart(const Layout& layout, int c,
                                        const std::vector<int64_t>& lengths,
-                                       const std::vector<std::array<double, 2>>& corner) {
+                                       const std::vector<std::array<double, 2>>& corner,
+                                       FlatteningWeights weights) {
   const Chart& chart = layout.charts[c];
   const TriangleMesh& mesh = layout.mesh;
   const int k = chart.valence();
@@ -98,7 +99,8 @@ ChartParametrization parametrize_chart(const Layout& layout, int c,
       const double half = tan_half_angle(u, v);
       constexpr double kTiny = 1e-300;
       for (auto [other, d] : {std::pair{j, norm(u)}, std::pair{l, norm(v)}}) {
-        const double w = half / std::max(d, kTiny);
+        // Uniform: each interior edge is seen from its two triangles, so weight ½ each.
+        const double w = weights == FlatteningWeights::Uniform ? 0.5 : half / std::max(d, kTiny);
         diagonal[i - nb] += w;
         if (other < nb) {
           rhs(i - nb, 0) += w * param.uv[other][0];

@@ -4,8 +4,11 @@
 // The chart's boundary is pinned to the polygon of its pattern (quant/pattern.hpp): each
 // subside covers its quantized share of its side, its mesh vertices placed by arc length, so
 // that subside endpoints land exactly on the pattern's boundary vertices. Interior vertices get
-// mean-value coordinates (Floater 2003): positive weights, so the map of a chart onto a convex
-// polygon is one-to-one and every pattern vertex falls in exactly one triangle.
+// mean-value coordinates (Floater 2003), or uniform ones (Tutte's barycentric embedding): both
+// positive weights, so the map of a chart onto a convex polygon is one-to-one and every pattern
+// vertex falls in exactly one triangle. Mean-value coordinates follow the surface's shape;
+// uniform ones spread the vertices by the mesh's connectivity, which gives a different start
+// where a chart's shape makes the first fail (tessellate.cpp retries tangled charts with it).
 #pragma once
 
 #include <array>
@@ -22,11 +25,14 @@ struct ChartParametrization {
   std::vector<std::array<int, 3>> triangles;  // local vertex ids
 };
 
+enum class FlatteningWeights { MeanValue, Uniform };
+
 // Flattens chart `c` given every subside's quantized length onto `polygon`, the chart's
 // pattern polygon (QuadPattern::polygon: corner j, side j of the chart's side lengths).
 ChartParametrization parametrize_chart(const Layout& layout, int c,
                                        const std::vector<int64_t>& lengths,
-                                       const std::vector<std::array<double, 2>>& polygon);
+                                       const std::vector<std::array<double, 2>>& polygon,
+                                       FlatteningWeights weights = FlatteningWeights::MeanValue);
 
 // A point of the chart, as a mesh triangle and barycentric coordinates.
 struct SurfacePoint {

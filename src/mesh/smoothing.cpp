@@ -1,6 +1,8 @@
 // smooth_on_surface (quant/tessellate.hpp): damped umbrella smoothing with projection onto the
 // input surface. Each free vertex is projected onto the triangles of the chart(s) it belongs
 // to rather than onto the whole surface, so that on thin parts it cannot jump to the far side.
+#include "mesh/smoothing.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -113,12 +115,21 @@ detail::TriangleTree::Hit closest_on_polyline(const Layout& layout, const std::v
   return best;
 }
 
-}  // namespace
-
-void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOptions& options) {
+// smooth_on_surface over the vertices `only` (all when null).
+void smooth(const Layout& layout, Tessellation& t, const SmoothingOptions& options,
+            const std::vector<int>* only) {
   if (options.iterations <= 0) return;
   QuadMesh& mesh = t.mesh;
   const int nv = mesh.num_vertices();
+  std::vector<int> active;
+  if (only) {
+    active = *only;
+  } else {
+    active.resize(nv);
+    for (int v = 0; v < nv; ++v) active[v] = v;
+  }
+  std::vector<char> is_active(nv, 0);
+  for (int v : active) is_active[v] = 1;
   std::set<std::pair<int, int>> feature;
   for (const auto& e : layout.feature_edges)
     feature.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
@@ -190,10 +201,14 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
     else if (o.mesh_vertex >= 0 && !pinned[o.mesh_vertex])
       charts[v].assign(charts_at[o.mesh_vertex].begin(), charts_at[o.mesh_vertex].end());
   }
-  std::vector<std::unique_ptr<detail::TriangleTree>> tree(layout.charts.size());
-  for (size_t c = 0; c < layout.charts.size(); ++c)
-    if (!layout.charts[c].empty())
-      tree[c] = std::make_unique<detail::TriangleTree>(layout.mesh, layout.charts[c].faces);
+  // Each chart's triangles for closest points, built on first use.
+  std::vector<std::unique_ptr<detail::TriangleTree>> trees(layout.charts.size());
+  const auto tree = [&](int c) -> const detail::TriangleTree* {
+    if (c < 0 || layout.charts[c].empty()) return nullptr;
+    if (!trees[c])
+      trees[c] = std::make_unique<detail::TriangleTree>(layout.mesh, layout.charts[c].faces);
+    return trees[c].get();
+  };
   std::vector<std::vector<std::array<int, 3>>> corners(nv);  // (next, opposite, previous)
   for (const auto& q : mesh.quads)
     for (int a = 0; a < 4; ++a)
@@ -211,15 +226,24 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
     for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
   // The surface's normal under each quad (at its centre's closest point on its chart): the
   // quality below measures quads against it, so that turning a quad over never looks good.
+  // Only the quads at active vertices are ever measured.
+  std::vector<int> active_quads;
+  for (int f = 0; f < mesh.num_quads(); ++f)
+    for (int v : mesh.quads[f])
+      if (is_active[v]) {
+        active_quads.push_back(f);
+        break;
+      }
   std::vector<std::array<double, 3>> up(mesh.num_quads());
-  for (int f = 0; f < mesh.num_quads(); ++f) {
+  for (int f : active_quads) {
     std::array<double, 3> centre{0, 0, 0};
     for (int v : mesh.quads[f])
       for (int d = 0; d < 3; ++d) centre[d] += mesh.vertices[v][d] / 4;
     const int c = f < static_cast<int>(mesh.quad_patch.size()) ? mesh.quad_patch[f] : -1;
-    up[f] = detail::normalized(
-        c >= 0 && tree[c] ? detail::triangle_normal(layout.mesh, tree[c]->closest(centre).face)
-                          : detail::newell_normal(mesh, mesh.quads[f]));
+    const detail::TriangleTree* under = tree(c);
+    up[f] =
+        detail::normalized(under ? detail::triangle_normal(layout.mesh, under->closest(centre).face)
+                                 : detail::newell_normal(mesh, mesh.quads[f]));
   }
   // The worst scaled Jacobian among the quads at v, against the surface's normal and against
   // the quad's own (what metrics.hpp reports).
@@ -243,8 +267,9 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
     best.distance = -1;
     if (curve[v] >= 0) best = closest_on_polyline(layout, curve_polylines[curve[v]], p);
     for (int c : charts[v]) {
-      if (!tree[c]) continue;
-      const detail::TriangleTree::Hit hit = tree[c]->closest(p);
+      const detail::TriangleTree* on = tree(c);
+      if (!on) continue;
+      const detail::TriangleTree::Hit hit = on->closest(p);
       if (best.distance < 0 || hit.distance < best.distance) best = hit;
     }
     return best.distance >= 0 ? best.point : p;
@@ -310,7 +335,7 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
     mesh.vertices[v] = chosen_quality >= std::min(before, kGoodEnough) ? chosen : old;
   };
   for (int iteration = 0; iteration < options.iterations; ++iteration)
-    for (int v = 0; v < nv; ++v) relax(v);
+    for (int v : active) relax(v);
 
   // Untangling where quads are still inverted: the vertices near them descend the sum of
   // their quads' untangling energies (untangle.hpp) against both normals. Unlike the
@@ -337,7 +362,7 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
   };
   for (int round = 0; round < (options.iterations > 0 ? kUntangleRounds : 0); ++round) {
     std::set<int> region;
-    for (int f = 0; f < mesh.num_quads(); ++f)
+    for (int f : active_quads)
       if (inverted(f))
         for (int v : mesh.quads[f])
           for (int w : neighbours[v]) {
@@ -346,7 +371,7 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
           }
     if (region.empty()) break;
     for (int v : region) {
-      if (!movable(v)) continue;
+      if (!is_active[v] || !movable(v)) continue;
       const detail::Vec3 old = mesh.vertices[v];
       detail::Vec3 chosen = old;
       double lowest = energy(v);
@@ -374,6 +399,17 @@ void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOpt
       mesh.vertices[v] = chosen;
     }
   }
+}
+
+}  // namespace
+
+void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOptions& options) {
+  smooth(layout, t, options, nullptr);
+}
+
+void smooth_vertices(const Layout& layout, Tessellation& t, const SmoothingOptions& options,
+                     const std::vector<int>& vertices) {
+  smooth(layout, t, options, &vertices);
 }
 
 }  // namespace bimdf::quant

@@ -8,6 +8,8 @@
 
 #include "bimdf/quant/quantize.hpp"
 #include "mesh/chart_parametrization.hpp"
+#include "mesh/quad_quality.hpp"
+#include "mesh/smoothing.hpp"
 
 namespace bimdf::quant {
 namespace {
@@ -81,6 +83,74 @@ std::vector<std::vector<int>> subside_vertices(const Layout& layout,
   return out;
 }
 
+// Places the interior vertices of chart c's pattern (pattern vertex v → quad mesh vertex
+// global[v]) at the surface points its flattening with `weights` maps them to.
+void place_interior(const Layout& layout, int c, const std::vector<int64_t>& lengths,
+                    const QuadPattern& pattern, const std::vector<int>& global,
+                    detail::FlatteningWeights weights, std::vector<Vec3>& positions) {
+  if (pattern.perimeter() == pattern.num_vertices()) return;
+  const detail::ChartParametrization param =
+      detail::parametrize_chart(layout, c, lengths, pattern.polygon, weights);
+  const detail::UvLocator locator(param);
+  for (int v = pattern.perimeter(); v < pattern.num_vertices(); ++v) {
+    const detail::SurfacePoint p = locator.locate(pattern.positions[v]);
+    Vec3 x{0, 0, 0};
+    for (int a = 0; a < 3; ++a) {
+      const Vec3& corner = layout.mesh.vertices[param.mesh_vertex[param.triangles[p.triangle][a]]];
+      for (int d = 0; d < 3; ++d) x[d] += p.barycentric[a] * corner[d];
+    }
+    positions[global[v]] = x;
+  }
+}
+
+// The number of inverted quads among `quads` and their smallest scaled Jacobian (quads with
+// coincident corners count as −1), by which tangled charts' alternatives are compared.
+std::pair<int, double> tangle(const QuadMesh& mesh, const std::vector<int>& quads) {
+  int inverted = 0;
+  double worst = 1;
+  for (int f : quads) {
+    const double sj = bimdf::detail::scaled_jacobian(mesh, mesh.quads[f]);
+    inverted += sj <= 0;
+    worst = std::min(worst, sj);
+  }
+  return {inverted, worst};
+}
+
+// Charts whose quads are still inverted after smoothing get a second start: their interior
+// vertices re-placed through the uniform (Tutte) flattening and smoothed again, with the
+// vertices of the neighbouring charts fixed. The better of the two (fewer inverted quads,
+// then the larger smallest scaled Jacobian, over every quad touching the chart) is kept.
+void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& lengths,
+                          const std::vector<QuadPattern>& patterns,
+                          const std::vector<std::vector<int>>& globals,
+                          const SmoothingOptions& smoothing, Tessellation& t) {
+  QuadMesh& mesh = t.mesh;
+  std::vector<std::vector<int>> chart_quads(layout.charts.size());
+  for (int f = 0; f < mesh.num_quads(); ++f) chart_quads[mesh.quad_patch[f]].push_back(f);
+  std::vector<std::vector<int>> vertex_quads(mesh.num_vertices());
+  for (int f = 0; f < mesh.num_quads(); ++f)
+    for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
+  for (int c = 0; c < static_cast<int>(layout.charts.size()); ++c) {
+    if (tangle(mesh, chart_quads[c]).first == 0) continue;
+    std::vector<int> vertices = globals[c];
+    std::vector<int> touching;
+    for (int v : vertices)
+      touching.insert(touching.end(), vertex_quads[v].begin(), vertex_quads[v].end());
+    std::sort(touching.begin(), touching.end());
+    touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+    const std::pair<int, double> before = tangle(mesh, touching);
+    std::vector<Vec3> kept;
+    for (int v : vertices) kept.push_back(mesh.vertices[v]);
+    place_interior(layout, c, lengths, patterns[c], globals[c], detail::FlatteningWeights::Uniform,
+                   mesh.vertices);
+    smooth_vertices(layout, t, smoothing, vertices);
+    const std::pair<int, double> after = tangle(mesh, touching);
+    if (after.first > before.first ||
+        (after.first == before.first && after.second <= before.second))
+      for (size_t i = 0; i < vertices.size(); ++i) mesh.vertices[vertices[i]] = kept[i];
+  }
+}
+
 }  // namespace
 
 Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& lengths,
@@ -93,13 +163,15 @@ Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& length
       subside_vertices(layout, lengths, mesh.vertices, result.origin);
   result.time_mapping_s += seconds_since(start);
   result.charts.resize(layout.charts.size());
+  std::vector<QuadPattern> patterns(layout.charts.size());
+  std::vector<std::vector<int>> globals(layout.charts.size());  // pattern → quad mesh vertex
   for (int c = 0; c < static_cast<int>(layout.charts.size()); ++c) {
     const Chart& chart = layout.charts[c];
     if (chart.empty()) continue;
     const int k = chart.valence();
     start = std::chrono::steady_clock::now();
     const std::vector<int64_t> sides = side_lengths(layout, c, lengths);
-    const QuadPattern pattern = make_quad_pattern(std::vector<int>(sides.begin(), sides.end()));
+    QuadPattern pattern = make_quad_pattern(std::vector<int>(sides.begin(), sides.end()));
     result.time_patterns_s += seconds_since(start);
 
     start = std::chrono::steady_clock::now();
@@ -114,23 +186,13 @@ Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& length
         for (int t = 0; t < x; ++t) global[position++] = along[side.reversed[i] ? x - t : t];
       }
     }
-    if (pattern.perimeter() < pattern.num_vertices()) {
-      const detail::ChartParametrization param =
-          detail::parametrize_chart(layout, c, lengths, pattern.polygon);
-      const detail::UvLocator locator(param);
-      for (int v = pattern.perimeter(); v < pattern.num_vertices(); ++v) {
-        const detail::SurfacePoint p = locator.locate(pattern.positions[v]);
-        Vec3 x{0, 0, 0};
-        for (int a = 0; a < 3; ++a) {
-          const Vec3& corner =
-              layout.mesh.vertices[param.mesh_vertex[param.triangles[p.triangle][a]]];
-          for (int d = 0; d < 3; ++d) x[d] += p.barycentric[a] * corner[d];
-        }
-        global[v] = mesh.num_vertices();
-        mesh.vertices.push_back(x);
-        result.origin.push_back({-1, -1, c});
-      }
+    for (int v = pattern.perimeter(); v < pattern.num_vertices(); ++v) {
+      global[v] = mesh.num_vertices();
+      mesh.vertices.push_back({0, 0, 0});
+      result.origin.push_back({-1, -1, c});
     }
+    place_interior(layout, c, lengths, pattern, global, detail::FlatteningWeights::MeanValue,
+                   mesh.vertices);
     std::vector<int> valence(pattern.num_vertices(), 0);
     for (const auto& q : pattern.quads) {
       mesh.quads.push_back({global[q[0]], global[q[1]], global[q[2]], global[q[3]]});
@@ -144,9 +206,13 @@ Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& length
     for (int v = pattern.perimeter(); v < pattern.num_vertices(); ++v)
       tiling.singularities += valence[v] != 4;
     result.time_mapping_s += seconds_since(start);
+    patterns[c] = std::move(pattern);
+    globals[c] = std::move(global);
   }
   start = std::chrono::steady_clock::now();
   smooth_on_surface(layout, result, smoothing);
+  if (smoothing.iterations > 0)
+    retry_tangled_charts(layout, lengths, patterns, globals, smoothing, result);
   result.time_smoothing_s = seconds_since(start);
   return result;
 }
