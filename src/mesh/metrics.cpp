@@ -96,8 +96,9 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
   for (int f = 0; f < nf; ++f) {
     sj[f] = detail::scaled_jacobian(mesh, mesh.quads[f]);
     sum += sj[f];
-    m.inverted += sj[f] < 0;
-    m.degenerate += sj[f] == 0;
+    const bool flat = detail::degenerate(mesh, mesh.quads[f]);
+    m.degenerate += flat;
+    m.inverted += !flat && sj[f] < 0;
   }
   if (nf > 0) {
     m.scaled_jacobian_mean = sum / nf;

@@ -2,6 +2,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <tuple>
@@ -123,7 +124,8 @@ QuadMesh read_obj_quads(const std::string& path) {
 
 void write_obj(std::ostream& out, const QuadMesh& mesh, const std::string& comment) {
   if (!comment.empty()) out << "# " << comment << "\n";
-  out.precision(10);
+  // Shortest digits that read back to the same double: the file measures like the mesh.
+  out.precision(std::numeric_limits<double>::max_digits10);
   for (const auto& v : mesh.vertices) out << "v " << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
   int patch = -2;
   for (size_t f = 0; f < mesh.quads.size(); ++f) {

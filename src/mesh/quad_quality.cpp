@@ -39,4 +39,20 @@ double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& q, const 
   return worst;
 }
 
+double corner_spread(const QuadMesh& mesh, const std::array<int, 4>& q) {
+  double shortest = INFINITY, longest = 0;
+  for (int a = 0; a < 4; ++a) {
+    for (int b = a + 1; b < 4; ++b) {
+      const double d = norm(sub(mesh.vertices[q[a]], mesh.vertices[q[b]]));
+      shortest = std::min(shortest, d);
+      if (b == a + 1 || (a == 0 && b == 3)) longest = std::max(longest, d);
+    }
+  }
+  return longest > 0 ? shortest / longest : 0;
+}
+
+bool degenerate(const QuadMesh& mesh, const std::array<int, 4>& q) {
+  return corner_spread(mesh, q) < kDegenerateSpread || scaled_jacobian(mesh, q) == 0;
+}
+
 }  // namespace bimdf::detail

@@ -19,4 +19,14 @@ double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& quad);
 double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& quad,
                        const std::array<double, 3>& normal);
 
+// The shortest distance between two of the quad's corners (its edges and diagonals) over its
+// longest edge: 1 for a square's edges… 0 when two corners coincide. The scaled Jacobian only
+// sees angles, which stay finite (and meaningless) as an edge shrinks to nothing.
+double corner_spread(const QuadMesh& mesh, const std::array<int, 4>& quad);
+
+// Degenerate (metrics.hpp): a scaled Jacobian of exactly 0, or two corners closer than
+// kDegenerateSpread of the longest edge — at that ratio the corner angles are rounding noise.
+constexpr double kDegenerateSpread = 1e-6;
+bool degenerate(const QuadMesh& mesh, const std::array<int, 4>& quad);
+
 }  // namespace bimdf::detail

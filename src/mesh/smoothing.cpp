@@ -26,6 +26,8 @@ namespace {
 constexpr double kGoodEnough = 0.5;
 // Vertices whose worst quad is worse than this get the local search.
 constexpr double kBad = 0.2;
+// Corners closer than this, relative to the quad's longest edge, make a quad bad.
+constexpr double kShortEdge = 0.01;
 // The untangling phase: at most this many rounds over the vertices near inverted quads, with
 // this regularization (untangle.hpp).
 constexpr int kUntangleRounds = 50;
@@ -247,15 +249,16 @@ void smooth(const Layout& layout, Tessellation& t, const SmoothingOptions& optio
   }
   // The worst scaled Jacobian among the quads at v, against the surface's normal and against
   // the quad's own (what metrics.hpp reports).
-  // A quad with two coincident corners (adjacent or diagonal) counts as −1: the scaled Jacobian
-  // calls it 0, which would let a vertex collapse onto its neighbour to escape an inverted quad.
+  // Corners closer than kShortEdge of the longest edge count as bad as an inverted quad, down
+  // to −1 when they coincide: otherwise a vertex could escape an inverted quad by collapsing
+  // onto its neighbour (projection onto a chart clamps to its corner), which the scaled
+  // Jacobian does not see.
   const auto quality = [&](int v) {
     double worst = 1;
     for (int f : vertex_quads[v]) {
       const std::array<int, 4>& q = mesh.quads[f];
-      for (int a = 0; a < 4; ++a)
-        for (int b = a + 1; b < 4; ++b)
-          if (mesh.vertices[q[a]] == mesh.vertices[q[b]]) return -1.0;
+      const double spread = detail::corner_spread(mesh, q);
+      if (spread < kShortEdge) worst = std::min(worst, spread / kShortEdge - 1);
       worst = std::min(
           {worst, detail::scaled_jacobian(mesh, q, up[f]), detail::scaled_jacobian(mesh, q)});
     }
@@ -342,7 +345,8 @@ void smooth(const Layout& layout, Tessellation& t, const SmoothingOptions& optio
   // max-min quality above, the sum lets a vertex give up some quality of one quad to make
   // room for a neighbour, which frees clusters of vertices that block each other.
   const auto inverted = [&](int f) {
-    return detail::scaled_jacobian(mesh, mesh.quads[f]) < 0 ||
+    return detail::corner_spread(mesh, mesh.quads[f]) < kShortEdge ||
+           detail::scaled_jacobian(mesh, mesh.quads[f]) < 0 ||
            detail::scaled_jacobian(mesh, mesh.quads[f], up[f]) < 0;
   };
   const auto inverted_at = [&](int v) {
@@ -379,9 +383,7 @@ void smooth(const Layout& layout, Tessellation& t, const SmoothingOptions& optio
       // The energy at p, +∞ where v would tangle more quads or make corners coincide.
       const auto allowed_energy = [&](const detail::Vec3& p) {
         mesh.vertices[v] = project(v, p);
-        return inverted_at(v) <= tangled && quality(v) > -1
-                   ? energy(v)
-                   : std::numeric_limits<double>::infinity();
+        return inverted_at(v) <= tangled ? energy(v) : std::numeric_limits<double>::infinity();
       };
       for (const detail::Vec3& p : search_positions(v)) {
         const double e = allowed_energy(p);

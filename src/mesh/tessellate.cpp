@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -103,14 +104,14 @@ void place_interior(const Layout& layout, int c, const std::vector<int64_t>& len
   }
 }
 
-// The number of inverted quads among `quads` and their smallest scaled Jacobian (quads with
-// coincident corners count as −1), by which tangled charts' alternatives are compared.
+// The number of inverted or degenerate quads among `quads` and their smallest scaled
+// Jacobian, by which a tangled chart's alternatives are compared.
 std::pair<int, double> tangle(const QuadMesh& mesh, const std::vector<int>& quads) {
   int inverted = 0;
   double worst = 1;
   for (int f : quads) {
     const double sj = bimdf::detail::scaled_jacobian(mesh, mesh.quads[f]);
-    inverted += sj <= 0;
+    inverted += sj < 0 || bimdf::detail::degenerate(mesh, mesh.quads[f]);
     worst = std::min(worst, sj);
   }
   return {inverted, worst};
@@ -130,9 +131,12 @@ void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& leng
   std::vector<std::vector<int>> vertex_quads(mesh.num_vertices());
   for (int f = 0; f < mesh.num_quads(); ++f)
     for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
-  for (int c = 0; c < static_cast<int>(layout.charts.size()); ++c) {
-    if (tangle(mesh, chart_quads[c]).first == 0) continue;
-    std::vector<int> vertices = globals[c];
+  // Runs `start` and then smoothing over `vertices`; undoes both unless the quads touching
+  // `vertices` end up less tangled.
+  const auto attempt = [&](std::vector<int> vertices, const std::function<void()>& start,
+                           const SmoothingOptions& options) {
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
     std::vector<int> touching;
     for (int v : vertices)
       touching.insert(touching.end(), vertex_quads[v].begin(), vertex_quads[v].end());
@@ -141,13 +145,36 @@ void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& leng
     const std::pair<int, double> before = tangle(mesh, touching);
     std::vector<Vec3> kept;
     for (int v : vertices) kept.push_back(mesh.vertices[v]);
-    place_interior(layout, c, lengths, patterns[c], globals[c], detail::FlatteningWeights::Uniform,
-                   mesh.vertices);
-    smooth_vertices(layout, t, smoothing, vertices);
+    start();
+    smooth_vertices(layout, t, options, vertices);
     const std::pair<int, double> after = tangle(mesh, touching);
     if (after.first > before.first ||
         (after.first == before.first && after.second <= before.second))
       for (size_t i = 0; i < vertices.size(); ++i) mesh.vertices[vertices[i]] = kept[i];
+  };
+  std::vector<std::vector<int>> neighbour_charts(layout.charts.size());
+  for (const Subside& s : layout.subsides)
+    if (s.charts[0] >= 0 && s.charts[1] >= 0 && s.charts[0] != s.charts[1]) {
+      neighbour_charts[s.charts[0]].push_back(s.charts[1]);
+      neighbour_charts[s.charts[1]].push_back(s.charts[0]);
+    }
+  SmoothingOptions longer = smoothing;
+  longer.iterations *= 3;
+  for (int c = 0; c < static_cast<int>(layout.charts.size()); ++c) {
+    if (tangle(mesh, chart_quads[c]).first == 0) continue;
+    attempt(
+        globals[c],
+        [&] {
+          place_interior(layout, c, lengths, patterns[c], globals[c],
+                         detail::FlatteningWeights::Uniform, mesh.vertices);
+        },
+        smoothing);
+    if (tangle(mesh, chart_quads[c]).first == 0) continue;
+    std::vector<int> around = globals[c];
+    for (int n : neighbour_charts[c])
+      around.insert(around.end(), globals[n].begin(), globals[n].end());
+    attempt(
+        around, [] {}, longer);
   }
 }
 

@@ -174,6 +174,18 @@ TEST(Remesh, LengthsThatAdmitNoPatternAreRejected) {
 
 QuadMesh grid() { return testing::quad_grid_2x2(); }
 
+TEST(QuadObj, WriteThenParseGivesTheSameMeshBitForBit) {
+  QuadMesh m = grid();
+  m.vertices[4] = {1.0 / 3, std::nextafter(1.0, 2.0), -1e-300};  // needs all 17 digits
+  m.vertices[0] = {1e-9, 123456.789012345678, 0.1};
+  std::ostringstream out;
+  write_obj(out, m, "round trip");
+  const QuadMesh back = parse_obj_quads(out.str(), "written.obj");
+  EXPECT_EQ(back.vertices, m.vertices);
+  EXPECT_EQ(back.quads, m.quads);
+  EXPECT_EQ(back.quad_patch, m.quad_patch);
+}
+
 TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
   TriangleMesh square{{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}};
   QuadMesh g = grid();
@@ -224,6 +236,14 @@ TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
   collapsed.vertices[0] = collapsed.vertices[1];
   EXPECT_EQ(measure_quad_mesh(collapsed).degenerate, 1);
   EXPECT_EQ(measure_quad_mesh(collapsed).inverted, 0);
+  // Almost onto it (10⁻⁹ of the edge, beyond the corner so that the angle is "inverted"): its
+  // angles are noise, so degenerate too; 10⁻⁴ away it is a real, inverted quad.
+  collapsed.vertices[0] = {1 + 1e-9, 1e-9, 0};
+  EXPECT_EQ(measure_quad_mesh(collapsed).degenerate, 1);
+  EXPECT_EQ(measure_quad_mesh(collapsed).inverted, 0);
+  collapsed.vertices[0] = {1 + 1e-4, 1e-4, 0};
+  EXPECT_EQ(measure_quad_mesh(collapsed).degenerate, 0);
+  EXPECT_EQ(measure_quad_mesh(collapsed).inverted, 1);
   QuadMesh bad = grid();
   bad.quads.push_back({0, 1, 4, 3});
   EXPECT_EQ(measure_quad_mesh(bad).non_manifold_edges, 4);
