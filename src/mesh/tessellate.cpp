@@ -117,10 +117,11 @@ std::pair<int, double> tangle(const QuadMesh& mesh, const std::vector<int>& quad
   return {inverted, worst};
 }
 
-// Charts whose quads are still inverted after smoothing get a second start: their interior
-// vertices re-placed through the uniform (Tutte) flattening and smoothed again, with the
-// vertices of the neighbouring charts fixed. The better of the two (fewer inverted quads,
-// then the larger smallest scaled Jacobian, over every quad touching the chart) is kept.
+// Charts whose quads are still inverted after smoothing get more starts, each kept only if
+// it leaves the quads touching the moved vertices less tangled (fewer inverted or degenerate
+// quads, then a larger smallest scaled Jacobian): (1) the interior vertices re-placed through
+// the uniform (Tutte) flattening and smoothed with everything else fixed; (2) three times the
+// smoothing rounds with the neighbouring charts' vertices free too; (3) both together.
 void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& lengths,
                           const std::vector<QuadPattern>& patterns,
                           const std::vector<std::vector<int>>& globals,
@@ -175,6 +176,14 @@ void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& leng
       around.insert(around.end(), globals[n].begin(), globals[n].end());
     attempt(
         around, [] {}, longer);
+    if (tangle(mesh, chart_quads[c]).first == 0) continue;
+    attempt(
+        around,
+        [&] {
+          place_interior(layout, c, lengths, patterns[c], globals[c],
+                         detail::FlatteningWeights::Uniform, mesh.vertices);
+        },
+        longer);
   }
 }
 
