@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -148,6 +149,40 @@ TEST(RemeshShared, EveryLayoutBecomesAConformingQuadMeshOfTheReferenceSize) {
     EXPECT_NEAR(r.smoothed.mesh.num_quads(), ref.align_quads, 0.1 * ref.align_quads) << ref.mesh;
     for (const ChartTiling& c : r.smoothed.charts) EXPECT_NE(c.kind, PatternKind::Fan) << ref.mesh;
   }
+}
+
+// Smoothing's untangling, without ../shared: every interior vertex of the bunny's largest
+// chart is pushed 90% of the way to a random neighbour, which folds many of its quads (local
+// tangles, as a distorting flattening makes), and smoothing must leave no inverted or
+// degenerate quad anywhere.
+TEST(Remesh, SmoothingUntanglesAFoldedChart) {
+  const Layout layout =
+      read_quadwild_layout(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj");
+  const std::vector<int64_t> lengths = quantize(layout, QuantizeOptions{}).lengths();
+  Tessellation t = tessellate(layout, lengths, SmoothingOptions{0, 0.5});
+  std::vector<std::vector<int>> interior(layout.charts.size());
+  for (int v = 0; v < t.mesh.num_vertices(); ++v)
+    if (t.origin[v].chart >= 0) interior[t.origin[v].chart].push_back(v);
+  const std::vector<int>& chart =
+      *std::max_element(interior.begin(), interior.end(),
+                        [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  ASSERT_GT(chart.size(), 50u);
+  std::vector<std::vector<int>> neighbours(t.mesh.num_vertices());
+  for (const auto& q : t.mesh.quads)
+    for (int a = 0; a < 4; ++a) neighbours[q[a]].push_back(q[(a + 1) % 4]);
+  std::mt19937 random(7);
+  for (int v : chart) {
+    const int w = neighbours[v][random() % neighbours[v].size()];
+    for (int d = 0; d < 3; ++d)
+      t.mesh.vertices[v][d] += 0.9 * (t.mesh.vertices[w][d] - t.mesh.vertices[v][d]);
+  }
+  const QuadMeshMetrics folded = measure_quad_mesh(t.mesh);
+  EXPECT_GT(folded.inverted + folded.degenerate, 20);
+  smooth_on_surface(layout, t, SmoothingOptions{});
+  const QuadMeshMetrics m = measure_quad_mesh(t.mesh, &layout.mesh);
+  EXPECT_EQ(m.inverted, 0);
+  EXPECT_EQ(m.degenerate, 0);
+  EXPECT_LT(m.hausdorff_relative, 0.02);
 }
 
 TEST(Remesh, LengthsThatAdmitNoPatternAreRejected) {
