@@ -19,6 +19,7 @@
 #include "bimdf/quant/tessellate.hpp"
 #include "bimdf/render.hpp"
 #include "cli_fixture.hpp"
+#include "mesh/quad_quality.hpp"
 #include "shared_layouts.hpp"
 #include "test_helpers.hpp"
 
@@ -135,6 +136,76 @@ TEST(Remesh, BundledLayoutBecomesAClosedConformingQuadMesh) {
   for (const ChartTiling& c : r.smoothed.charts) EXPECT_EQ(c.kind, PatternKind::Regular);
 }
 
+// Every inverted quad left must be forced by the layout: its layout mesh vertices are feature
+// corners (fixed), and no placement of its other vertices — those on subsides anywhere along
+// their subside (in any order), those inside anywhere on their chart's triangles — gives the
+// quad alone a scaled Jacobian of kFixable. Ignoring the neighbours and the order makes this
+// a necessary condition for any tessellation with these patterns to do better.
+void expect_inverted_quads_forced(const Layout& layout, const Tessellation& t,
+                                  const std::string& name) {
+  constexpr double kFixable = 0.05;
+  const std::set<int> feature_corner(layout.feature_corners.begin(), layout.feature_corners.end());
+  for (int f = 0; f < t.mesh.num_quads(); ++f) {
+    const auto& q = t.mesh.quads[f];
+    QuadMesh one;
+    for (int v : q) one.vertices.push_back(t.mesh.vertices[v]);
+    one.quads = {{0, 1, 2, 3}};
+    if (bimdf::detail::degenerate(one, one.quads[0]) ||
+        bimdf::detail::scaled_jacobian(one, one.quads[0]) >= 0)
+      continue;
+    std::vector<std::vector<std::array<double, 3>>> candidates(4);
+    int inside = 0;
+    for (int a = 0; a < 4; ++a) inside += t.origin[q[a]].chart >= 0;
+    const int c = t.mesh.quad_patch[f];
+    const double triangles = static_cast<double>(layout.charts[c].faces.size());
+    int g = 24;  // triangle grid resolution: at most ~4·10⁶ placements in all
+    while (g > 2 &&
+           std::pow(41.0, 4 - inside) * std::pow(triangles * (g + 1) * (g + 2) / 2, inside) > 4e6)
+      --g;
+    for (int a = 0; a < 4; ++a) {
+      const VertexOrigin& o = t.origin[q[a]];
+      if (o.mesh_vertex >= 0) {
+        EXPECT_TRUE(feature_corner.count(o.mesh_vertex))
+            << name << ": inverted quad " << f << " has a layout vertex that could move";
+        candidates[a] = {t.mesh.vertices[q[a]]};
+      } else if (o.subside >= 0) {
+        const std::vector<int>& chain = layout.subsides[o.subside].vertices;
+        for (int k = 0; k <= 40; ++k) {
+          const double s = (chain.size() - 1) * k / 40.0;
+          const size_t i = std::min(static_cast<size_t>(s), chain.size() - 2);
+          const auto& x = layout.mesh.vertices[chain[i]];
+          const auto& y = layout.mesh.vertices[chain[i + 1]];
+          candidates[a].push_back({x[0] + (s - i) * (y[0] - x[0]), x[1] + (s - i) * (y[1] - x[1]),
+                                   x[2] + (s - i) * (y[2] - x[2])});
+        }
+      } else {
+        for (int tf : layout.charts[o.chart].faces) {
+          const auto& tri = layout.mesh.faces[tf];
+          for (int i = 0; i <= g; ++i)
+            for (int j = 0; i + j <= g; ++j) {
+              std::array<double, 3> p;
+              for (int d = 0; d < 3; ++d)
+                p[d] = (1 - double(i + j) / g) * layout.mesh.vertices[tri[0]][d] +
+                       double(i) / g * layout.mesh.vertices[tri[1]][d] +
+                       double(j) / g * layout.mesh.vertices[tri[2]][d];
+              candidates[a].push_back(p);
+            }
+        }
+      }
+    }
+    double best = -1;
+    for (const auto& p0 : candidates[0])
+      for (const auto& p1 : candidates[1])
+        for (const auto& p2 : candidates[2])
+          for (const auto& p3 : candidates[3]) {
+            one.vertices = {p0, p1, p2, p3};
+            best = std::max(best, bimdf::detail::scaled_jacobian(one, one.quads[0]));
+          }
+    EXPECT_LT(best, kFixable) << name << ": inverted quad " << f << " (chart " << c
+                              << ") could have a scaled Jacobian of " << best;
+  }
+}
+
 TEST(RemeshShared, EveryLayoutBecomesAConformingQuadMeshOfTheReferenceSize) {
   REQUIRE_SHARED_LAYOUTS();
   const std::vector<testing::Reference> refs = testing::references();
@@ -146,6 +217,7 @@ TEST(RemeshShared, EveryLayoutBecomesAConformingQuadMeshOfTheReferenceSize) {
     const Layout layout = read_quadwild_layout(testing::layout_path(ref.mesh));
     const Remeshed r = remesh(layout);
     expect_good_remesh(layout, r, ref.mesh);
+    expect_inverted_quads_forced(layout, r.smoothed, ref.mesh);
     EXPECT_NEAR(r.smoothed.mesh.num_quads(), ref.align_quads, 0.1 * ref.align_quads) << ref.mesh;
     for (const ChartTiling& c : r.smoothed.charts) EXPECT_NE(c.kind, PatternKind::Fan) << ref.mesh;
   }
