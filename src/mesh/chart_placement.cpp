@@ -51,7 +51,8 @@ void place_interior(const Layout& layout, int c, const std::vector<int64_t>& len
 void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& lengths,
                           const std::vector<QuadPattern>& patterns,
                           const std::vector<std::vector<int>>& globals,
-                          const SmoothingOptions& smoothing, Tessellation& t) {
+                          const SmoothingOptions& smoothing, SurfaceSmoother& smoother,
+                          Tessellation& t) {
   QuadMesh& mesh = t.mesh;
   std::vector<std::vector<int>> chart_quads(layout.charts.size());
   for (int f = 0; f < mesh.num_quads(); ++f) chart_quads[mesh.quad_patch[f]].push_back(f);
@@ -73,7 +74,7 @@ void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& leng
     std::vector<Vec3> kept;
     for (int v : vertices) kept.push_back(mesh.vertices[v]);
     start();
-    smooth_vertices(layout, t, options, vertices);
+    smoother.run(options, vertices);
     const std::pair<int, double> after = tangle(mesh, touching);
     if (after.first > before.first ||
         (after.first == before.first && after.second <= before.second))

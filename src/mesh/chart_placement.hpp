@@ -8,6 +8,7 @@
 
 #include "bimdf/quant/tessellate.hpp"
 #include "mesh/chart_parametrization.hpp"
+#include "mesh/smoothing.hpp"
 
 namespace bimdf::quant {
 
@@ -26,10 +27,12 @@ void place_interior(const Layout& layout, int c, const std::vector<int64_t>& len
 //  2. three times the smoothing rounds with the neighbouring charts' vertices free too;
 //  3. both together;
 //  4. up to 8 randomly shaken starts (a generator seeded by the chart id: reproducible).
-// `patterns[c]` and `globals[c]` (pattern vertex → quad mesh vertex) as tessellate built them.
+// `patterns[c]` and `globals[c]` (pattern vertex → quad mesh vertex) as tessellate built them;
+// `smoother` is set up on `tessellation`.
 void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& lengths,
                           const std::vector<QuadPattern>& patterns,
                           const std::vector<std::vector<int>>& globals,
-                          const SmoothingOptions& smoothing, Tessellation& tessellation);
+                          const SmoothingOptions& smoothing, SurfaceSmoother& smoother,
+                          Tessellation& tessellation);
 
 }  // namespace bimdf::quant

@@ -117,21 +117,28 @@ detail::TriangleTree::Hit closest_on_polyline(const Layout& layout, const std::v
   return best;
 }
 
-// smooth_on_surface over the vertices `only` (all when null).
-void smooth(const Layout& layout, Tessellation& t, const SmoothingOptions& options,
-            const std::vector<int>* only) {
-  if (options.iterations <= 0) return;
-  QuadMesh& mesh = t.mesh;
+}  // namespace
+
+// What smoothing needs that depends only on the layout and the tessellation's connectivity,
+// not on vertex positions: built once, shared by every run.
+struct SurfaceSmoother::Setup {
+  const Layout& layout;
+  Tessellation& t;
+  // Feature and border polylines (one per subside, then the joints), per vertex: the curve it
+  // slides along (−1: none) and the charts it may move on (empty: fixed or on a curve).
+  std::vector<std::vector<int>> curve_polylines;
+  std::vector<std::vector<int>> charts;
+  std::vector<int> curve;
+  std::vector<std::vector<std::array<int, 3>>> corners;  // (next, opposite, previous)
+  std::vector<std::vector<int>> neighbours;
+  std::vector<std::vector<int>> vertex_quads;
+  std::vector<std::unique_ptr<detail::TriangleTree>> trees;  // per chart, built on first use
+};
+
+SurfaceSmoother::SurfaceSmoother(const Layout& layout, Tessellation& t)
+    : setup_(std::make_unique<Setup>(Setup{layout, t, {}, {}, {}, {}, {}, {}, {}})) {
+  const QuadMesh& mesh = t.mesh;
   const int nv = mesh.num_vertices();
-  std::vector<int> active;
-  if (only) {
-    active = *only;
-  } else {
-    active.resize(nv);
-    for (int v = 0; v < nv; ++v) active[v] = v;
-  }
-  std::vector<char> is_active(nv, 0);
-  for (int v : active) is_active[v] = 1;
   std::set<std::pair<int, int>> feature;
   for (const auto& e : layout.feature_edges)
     feature.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
@@ -203,14 +210,6 @@ void smooth(const Layout& layout, Tessellation& t, const SmoothingOptions& optio
     else if (o.mesh_vertex >= 0 && !pinned[o.mesh_vertex])
       charts[v].assign(charts_at[o.mesh_vertex].begin(), charts_at[o.mesh_vertex].end());
   }
-  // Each chart's triangles for closest points, built on first use.
-  std::vector<std::unique_ptr<detail::TriangleTree>> trees(layout.charts.size());
-  const auto tree = [&](int c) -> const detail::TriangleTree* {
-    if (c < 0 || layout.charts[c].empty()) return nullptr;
-    if (!trees[c])
-      trees[c] = std::make_unique<detail::TriangleTree>(layout.mesh, layout.charts[c].faces);
-    return trees[c].get();
-  };
   std::vector<std::vector<std::array<int, 3>>> corners(nv);  // (next, opposite, previous)
   for (const auto& q : mesh.quads)
     for (int a = 0; a < 4; ++a)
@@ -226,6 +225,52 @@ void smooth(const Layout& layout, Tessellation& t, const SmoothingOptions& optio
   std::vector<std::vector<int>> vertex_quads(nv);
   for (int f = 0; f < mesh.num_quads(); ++f)
     for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
+  Setup& s = *setup_;
+  s.curve_polylines = std::move(curve_polylines);
+  s.charts = std::move(charts);
+  s.curve = std::move(curve);
+  s.corners = std::move(corners);
+  s.neighbours = std::move(neighbours);
+  s.vertex_quads = std::move(vertex_quads);
+  s.trees.resize(layout.charts.size());
+}
+
+SurfaceSmoother::~SurfaceSmoother() = default;
+
+void SurfaceSmoother::run(const SmoothingOptions& options) { run(options, nullptr); }
+
+void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int>& vertices) {
+  run(options, &vertices);
+}
+
+void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int>* only) {
+  if (options.iterations <= 0) return;
+  Setup& s = *setup_;
+  const Layout& layout = s.layout;
+  QuadMesh& mesh = s.t.mesh;
+  const int nv = mesh.num_vertices();
+  const std::vector<std::vector<int>>& curve_polylines = s.curve_polylines;
+  const std::vector<std::vector<int>>& charts = s.charts;
+  const std::vector<int>& curve = s.curve;
+  const std::vector<std::vector<std::array<int, 3>>>& corners = s.corners;
+  const std::vector<std::vector<int>>& neighbours = s.neighbours;
+  const std::vector<std::vector<int>>& vertex_quads = s.vertex_quads;
+  // Each chart's triangles for closest points, built on first use and kept for later runs.
+  const auto tree = [&](int c) -> const detail::TriangleTree* {
+    if (c < 0 || layout.charts[c].empty()) return nullptr;
+    if (!s.trees[c])
+      s.trees[c] = std::make_unique<detail::TriangleTree>(layout.mesh, layout.charts[c].faces);
+    return s.trees[c].get();
+  };
+  std::vector<int> active;
+  if (only) {
+    active = *only;
+  } else {
+    active.resize(nv);
+    for (int v = 0; v < nv; ++v) active[v] = v;
+  }
+  std::vector<char> is_active(nv, 0);
+  for (int v : active) is_active[v] = 1;
   // The surface's normal under each quad (at its centre's closest point on its chart): the
   // quality below measures quads against it, so that turning a quad over never looks good.
   // Only the quads at active vertices are ever measured.
@@ -364,7 +409,7 @@ void smooth(const Layout& layout, Tessellation& t, const SmoothingOptions& optio
     }
     return sum;
   };
-  for (int round = 0; round < (options.iterations > 0 ? kUntangleRounds : 0); ++round) {
+  for (int round = 0; round < kUntangleRounds; ++round) {
     std::set<int> region;
     for (int f : active_quads)
       if (inverted(f))
@@ -403,15 +448,8 @@ void smooth(const Layout& layout, Tessellation& t, const SmoothingOptions& optio
   }
 }
 
-}  // namespace
-
 void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOptions& options) {
-  smooth(layout, t, options, nullptr);
-}
-
-void smooth_vertices(const Layout& layout, Tessellation& t, const SmoothingOptions& options,
-                     const std::vector<int>& vertices) {
-  smooth(layout, t, options, &vertices);
+  if (options.iterations > 0) SurfaceSmoother(layout, t).run(options);
 }
 
 }  // namespace bimdf::quant

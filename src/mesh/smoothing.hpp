@@ -1,15 +1,32 @@
-// Smoothing a part of a tessellation (smooth_on_surface in quant/tessellate.hpp smooths all).
+// Smoothing in parts (smooth_on_surface in quant/tessellate.hpp smooths everything once):
+// tessellate smooths the whole mesh, then gives tangled charts more starts, each smoothed
+// alone (chart_placement.hpp). The setup that depends only on the layout and the mesh's
+// connectivity — curves, adjacency, closest-point trees — is built once for all those runs.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "bimdf/quant/tessellate.hpp"
 
 namespace bimdf::quant {
 
-// smooth_on_surface restricted to the quad mesh vertices `vertices` (those that may move at
-// all): the others stay where they are. Used to give one tangled chart a second start.
-void smooth_vertices(const Layout& layout, Tessellation& tessellation,
-                     const SmoothingOptions& options, const std::vector<int>& vertices);
+class SurfaceSmoother {
+ public:
+  // Prepares smoothing `tessellation` (a tessellation of `layout`; both must outlive the
+  // smoother, and the mesh's connectivity must not change).
+  SurfaceSmoother(const Layout& layout, Tessellation& tessellation);
+  ~SurfaceSmoother();
+
+  // smooth_on_surface: every vertex may move.
+  void run(const SmoothingOptions& options);
+  // The same restricted to the quad mesh vertices `vertices`: the others stay where they are.
+  void run(const SmoothingOptions& options, const std::vector<int>& vertices);
+
+ private:
+  struct Setup;
+  std::unique_ptr<Setup> setup_;
+  void run(const SmoothingOptions& options, const std::vector<int>* only);
+};
 
 }  // namespace bimdf::quant

@@ -9,6 +9,7 @@
 #include "bimdf/quant/quantize.hpp"
 #include "mesh/chart_parametrization.hpp"
 #include "mesh/chart_placement.hpp"
+#include "mesh/smoothing.hpp"
 
 namespace bimdf::quant {
 namespace {
@@ -141,9 +142,11 @@ Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& length
     globals[c] = std::move(global);
   }
   start = std::chrono::steady_clock::now();
-  smooth_on_surface(layout, result, smoothing);
-  if (smoothing.iterations > 0)
-    retry_tangled_charts(layout, lengths, patterns, globals, smoothing, result);
+  if (smoothing.iterations > 0) {
+    SurfaceSmoother smoother(layout, result);
+    smoother.run(smoothing);
+    retry_tangled_charts(layout, lengths, patterns, globals, smoothing, smoother, result);
+  }
   result.time_smoothing_s = seconds_since(start);
   return result;
 }
