@@ -118,7 +118,10 @@ std::string human_report(const Solution& s, bool exact, bool verbose) {
                        " components needed a fallback");
     if (exact)
       line("matching", "largest " + stat_text(s, "matching_nodes_max") + " nodes, " +
-                           stat_text(s, "matching_edges_max") + " edges");
+                           stat_text(s, "matching_edges_max") + " edges; " +
+                           stat_text(s, "matching_free_after_warm_start") +
+                           " vertices left free by the warm starts, " +
+                           stat_text(s, "matching_lemon_fallbacks") + " rounds solved by LEMON");
   }
   return t;
 }
@@ -153,6 +156,11 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
                   "Seconds before refinement stops and returns the best flow as feasible")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-lower-bound", o.no_lower_bound, "Skip the LP-relaxation lower bound");
+  cmd->add_option("--matching", o.matching,
+                  "Perfect matching solver of the refinement: blossom (bimdf's own, "
+                  "warm-started) or lemon (LEMON's, from scratch; a cross-check)")
+      ->default_val("blossom")
+      ->check(CLI::IsMember({"blossom", "lemon"}));
   cmd->add_flag("-v,--verbose", o.verbose, "Print sizes and the time of every stage");
   add_output_options(cmd, o.out);
   return cmd;
@@ -180,6 +188,7 @@ int run_solve(const SolveCommandOptions& o) {
     solver.collapse_chains(!o.no_simplify).threads(o.threads).lower_bound(!o.no_lower_bound);
     if (o.max_rounds > 0) solver.max_rounds(o.max_rounds);
     if (o.time_limit > 0) solver.time_limit(o.time_limit);
+    solver.matching(o.matching == "lemon" ? MatchingBackend::Lemon : MatchingBackend::Blossom);
     solver.run();
     s = solver.solution();
   }

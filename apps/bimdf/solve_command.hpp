@@ -19,6 +19,7 @@ struct SolveCommandOptions {
   int64_t max_rounds = 0;  // 0: unlimited
   double time_limit = 0;   // seconds; 0: unlimited
   bool no_lower_bound = false;
+  std::string matching = "blossom";
   bool verbose = false;
   OutputOptions out;
 };

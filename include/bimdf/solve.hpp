@@ -52,6 +52,12 @@ enum class DoubleCoverMode {
   Symmetric,   // odd capacities rounded down to even, half on each copy
 };
 
+// Which maximum-weight perfect matching solver the exact refinement uses.
+enum class MatchingBackend {
+  Blossom,  // bimdf's own, warm-started from each round's LP relaxation (default)
+  Lemon,    // LEMON's MaxWeightedPerfectMatching from scratch: slower, kept as a cross-check
+};
+
 // Thrown by run() when a stage fails in a way that is neither a solution nor a proof of
 // infeasibility (see the header comment). The message names the component and what failed.
 class SolverError : public std::runtime_error {
@@ -61,8 +67,8 @@ class SolverError : public std::runtime_error {
 
 // The exact solver (paper §3.7–3.9): the approximation above, then iterative refinement — each
 // round a minimum-cost circulation of throughflow at most 2 around the current flow, found as a
-// maximum-weight perfect matching (LEMON) on the arcs that the round's LP relaxation cannot
-// exclude — until a round no longer lowers the objective, which proves optimality (paper
+// maximum-weight perfect matching (our blossom solver) on the arcs that the round's LP relaxation
+// cannot exclude — until a round no longer lowers the objective, which proves optimality (paper
 // Thm 3.8). Components are solved independently, on `threads` workers; the flow does not
 // depend on the thread count. When a limit stops refinement first, a lower bound from the LP
 // relaxation of the whole problem says how far from optimal the flow can be.
@@ -91,6 +97,8 @@ class Solver {
   // Report a lower bound ("lower_bound", "relative_gap"): the optimum itself for components
   // proven optimal, the LP relaxation's bound for the others. Default true.
   Solver& lower_bound(bool enable);
+  // The perfect matching solver of the refinement rounds. Default MatchingBackend::Blossom.
+  Solver& matching(MatchingBackend backend);
 
   // Returns Optimal, Feasible (a limit was hit) or Infeasible. Throws like ApproximateSolver.
   SolveStatus run();
@@ -110,6 +118,7 @@ class Solver {
   double time_limit_s_ = -1;
   int threads_ = 1;
   bool lower_bound_ = true;
+  MatchingBackend matching_ = MatchingBackend::Blossom;
   Solution solution_;
 };
 

@@ -24,7 +24,7 @@ double integer_cost_scale(const std::vector<double>& costs, int num_nodes, int l
   return std::ldexp(1.0, k);
 }
 
-MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf) {
+MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2) {
   const int n = mcf.num_nodes(), m = mcf.num_arcs();
   // StaticDigraph wants arcs sorted by source; remember the permutation.
   std::vector<std::pair<int, int>> arcs(m);
@@ -41,7 +41,7 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf) {
     result.status = MinCostFlowStatus::Optimal;
     return result;
   }
-  result.cost_scale = integer_cost_scale(mcf.cost, n);
+  result.cost_scale = integer_cost_scale(mcf.cost, n, std::min(limit_log2, 60));
   lemon::StaticDigraph::ArcMap<int64_t> upper(g), cost(g);
   lemon::StaticDigraph::NodeMap<int64_t> supply(g);
   for (int i = 0; i < m; ++i) {
@@ -74,6 +74,8 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf) {
     result.reduced_cost[order[i]] =
         cost[a] + simplex.potential(g.source(a)) - simplex.potential(g.target(a));
   }
+  result.potential.resize(n);
+  for (int v = 0; v < n; ++v) result.potential[v] = simplex.potential(g.node(v));
   return result;
 }
 

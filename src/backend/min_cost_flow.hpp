@@ -30,10 +30,13 @@ struct MinCostFlowResult {
   // flow = capacity where reduced_cost < 0. |reduced_cost| < 3·2^60, see the scale above.
   std::vector<int64_t> scaled_cost;
   std::vector<int64_t> reduced_cost;
+  std::vector<int64_t> potential;  // π per node, when Optimal
 };
 
-// Solves `mcf` exactly (for the scaled integer costs). Deterministic.
-MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf);
+// Solves `mcf` exactly (for the scaled integer costs). Deterministic. `limit_log2` < 60 gives
+// coarser integer costs (the bound above with 2^limit_log2), for callers that hand the costs
+// and potentials on to a solver with less headroom (refinement's perfect matching).
+MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2 = 60);
 
 // The scale S described above, for the given costs and node count; `limit_log2` is 60 for the
 // min-cost flow and smaller for solvers that multiply their duals.

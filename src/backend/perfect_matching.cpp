@@ -24,12 +24,7 @@ std::optional<std::vector<char>> max_weight_perfect_matching(const MatchingGraph
   for (int e = 0; e < in.num_edges(); ++e)
     weight[g.edgeFromId(e)] = std::llround(in.weight[e] * scale);
   std::optional<std::vector<char>> matched;
-  // Blossom nesting depth is bounded by num_nodes / 2 and LEMON recurses once per level
-  // (about 180 bytes a frame in a release build, a few times that with sanitizers), so the
-  // default stack suffices below ~16k nodes: see deep_stack.hpp.
-  const std::size_t stack_bytes =
-      in.num_nodes < 16384 ? 0 : (std::size_t{64} << 20) + std::size_t(in.num_nodes) * 512;
-  run_with_stack(stack_bytes, [&] {
+  run_with_stack(matching_stack_bytes(in.num_nodes), [&] {
     lemon::MaxWeightedPerfectMatching<lemon::SmartGraph, lemon::SmartGraph::EdgeMap<int64_t>>
         matching(g, weight);
     if (!matching.run()) return;

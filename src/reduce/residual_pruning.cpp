@@ -15,7 +15,7 @@ ResidualPruning prune_residual(const BiMcf& residual) {
       throw std::invalid_argument("residual pruning needs zero demands (node " + std::to_string(v) +
                                   ")");
   const DoubleCover dc = build_double_cover(residual, DoubleCoverKind::Relaxation);
-  const MinCostFlowResult lp = solve_min_cost_flow(dc.mcf);
+  const MinCostFlowResult lp = solve_min_cost_flow(dc.mcf, kLpScaleLog2);
   if (lp.status != MinCostFlowStatus::Optimal)
     throw std::logic_error(
         "residual pruning: the LP relaxation of a circulation problem with "
@@ -53,11 +53,14 @@ ResidualPruning prune_residual(const BiMcf& residual) {
     for (int a = 0; a < m; ++a) out.integral_circulation[a] = twice[a] / 2;
   }
 
+  out.cost_scale = lp.cost_scale;
   std::vector<int> node_of(n, -1);
   auto node = [&](End e) {
     if (node_of[e.node] < 0) {
       node_of[e.node] = out.reduced.num_nodes();
       out.reduced.demand.push_back(0);
+      // Double cover nodes: v⁺ = 2v, v⁻ = 2v + 1 (double_cover.cpp).
+      out.node_dual.push_back(lp.potential[2 * e.node + 1] - lp.potential[2 * e.node]);
     }
     return End{node_of[e.node], e.head};
   };
@@ -71,6 +74,7 @@ ResidualPruning prune_residual(const BiMcf& residual) {
     out.reduced.capacity.push_back(residual.capacity[a]);
     out.reduced.cost.push_back(residual.cost[a]);
     out.arc_of.push_back(a);
+    out.twice_flow.push_back(twice[a]);
   }
   return out;
 }

@@ -16,6 +16,13 @@
 // All of this is exact for the scaled integer costs (backend/min_cost_flow.hpp). So that no
 // arc is fixed on the strength of rounding, the test carries a margin of one scaled unit per
 // unit of residual capacity, an upper bound on the rounding error of any circulation.
+//
+// The LP also warm-starts the perfect matching that follows: its integer costs (scale S, with
+// 2^kLpScaleLog2 in place of 2^60 so that the matching solver has headroom) and, per node v,
+// d(v) = π(v⁻) − π(v⁺) from the double cover's potentials. A bidirected arc's two directed
+// copies have reduced costs summing to 2c + σ_a·d(a) + σ_b·d(b) (σ = +1 at a head, −1 at a
+// tail), so the b-matching duals σ·d/2 on the sides of each node make every arc the LP leaves
+// empty feasible and every arc it uses tight (matching_gadgets.hpp: gadget_duals).
 #pragma once
 
 #include <cstdint>
@@ -35,10 +42,17 @@ struct ResidualPruning {
   BiMcf reduced;
   std::vector<int> arc_of;  // reduced arc → residual arc
   int64_t fixed_arcs = 0;
+  // The LP's integer cost scale S, d(v) per node of `reduced` (in units of 1/S), and the LP's
+  // flow per arc of `reduced`, doubled (2y: 1 where the LP splits a unit).
+  double cost_scale = 1;
+  std::vector<int64_t> node_dual;
+  std::vector<int64_t> twice_flow;
 
   // A circulation of `reduced` as one of the residual (fixed arcs 0).
   std::vector<int64_t> lift(std::span<const int64_t> reduced_flow, int num_residual_arcs) const;
 };
+
+constexpr int kLpScaleLog2 = 52;
 
 // `residual` must have zero demands and finite capacities. Throws std::logic_error if its LP
 // relaxation is not optimal (the zero circulation is feasible and capacities are finite).

@@ -56,6 +56,8 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
     r.time_pruning_s = refined.time_pruning_s;
     r.matching_nodes = refined.matching_nodes;
     r.matching_edges = refined.matching_edges;
+    r.matching_free_vertices = refined.matching_free_vertices;
+    r.lemon_fallbacks = refined.lemon_fallbacks;
     r.time_refine_build_s = refined.time_build_s;
     r.time_matching_s = refined.time_matching_s;
     if (refined.converged) r.status = SolveStatus::Optimal;

@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
+#include <optional>
 #include <stdexcept>
 
+#include "backend/blossom_matching.hpp"
 #include "backend/perfect_matching.hpp"
 #include "bimdf/flow.hpp"
+#include "core/deep_stack.hpp"
 #include "reduce/bmatching.hpp"
 #include "reduce/linearize.hpp"
 #include "reduce/matching_gadgets.hpp"
@@ -19,6 +23,47 @@ constexpr int kThroughflow = 2;  // M = U = 2, paper §3.9
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The round's perfect matching by our blossom solver, warm-started from the pruning LP: its
+// integer costs (doubled) are the matching weights, so its duals carry over exactly (see
+// residual_pruning.hpp and matching_gadgets.hpp). Falls back to LEMON when the weights exceed
+// the solver's overflow bound or when asked to.
+std::optional<std::vector<char>> solve_round_matching(
+    const BMatching& bm, std::span<const int> arc_of_edge, const MatchingReduction& mm,
+    const ResidualPruning& pruned, const RefineOptions& options, RefineResult& r) {
+  if (options.matching == MatchingBackend::Lemon) return max_weight_perfect_matching(mm.graph);
+  const double scale = pruned.cost_scale;
+  auto integer = [&](double w) { return 2 * static_cast<int64_t>(std::llround(w * scale)); };
+  const MatchingGraph& g = mm.graph;
+  std::vector<int64_t> weight(g.num_edges()), bedge_weight(bm.num_edges());
+  for (int e = 0; e < g.num_edges(); ++e) weight[e] = integer(g.weight[e]);
+  for (int e = 0; e < bm.num_edges(); ++e) bedge_weight[e] = integer(bm.weight[e]);
+  // b-nodes 2v (heads of v, σ = +1) and 2v + 1 (tails, σ = −1): bmatching.hpp.
+  std::vector<int64_t> bnode_dual(bm.num_nodes());
+  for (int v = 0; 2 * v < bm.num_nodes(); ++v) {
+    bnode_dual[2 * v] = pruned.node_dual[v];
+    bnode_dual[2 * v + 1] = -pruned.node_dual[v];
+  }
+  // The LP's integral part: one unit on each reduced arc it fills (2y = 2).
+  std::vector<int> used(bm.num_edges(), 0);
+  for (int e = 0; e < bm.num_edges(); ++e)
+    if (arc_of_edge[e] >= 0) used[e] = static_cast<int>(pruned.twice_flow[arc_of_edge[e]] / 2);
+  try {
+    BlossomMatching solver(g.num_nodes, g.end_a, g.end_b, weight);
+    solver.initial_duals(gadget_duals(bm, mm, bnode_dual, bedge_weight))
+        .initial_matching(gadget_matching(bm, mm, used));
+    // Augmenting through nested blossoms recurses once per nesting level below the path's
+    // own (rotate_to): the same headroom as for LEMON (backend/perfect_matching.cpp).
+    BlossomMatching::Status status = BlossomMatching::Status::NotRun;
+    run_with_stack(matching_stack_bytes(g.num_nodes), [&] { status = solver.run(); });
+    if (status != BlossomMatching::Status::Optimal) return std::nullopt;
+    r.matching_free_vertices += solver.free_after_start();
+    return solver.matched_edges();
+  } catch (const std::invalid_argument&) {
+    ++r.lemon_fallbacks;  // weights beyond the overflow bound
+    return max_weight_perfect_matching(mm.graph);
+  }
 }
 
 }  // namespace
@@ -65,7 +110,8 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     r.matching_edges = std::max<int64_t>(r.matching_edges, mm.graph.num_edges());
     r.time_build_s += seconds_since(t);
     t = std::chrono::steady_clock::now();
-    const std::optional<std::vector<char>> matched = max_weight_perfect_matching(mm.graph);
+    const std::optional<std::vector<char>> matched =
+        solve_round_matching(bm.bmatching, bm.arc_of_edge, mm, pruned, options, r);
     r.time_matching_s += seconds_since(t);
     ++r.matchings;
     if (!matched)

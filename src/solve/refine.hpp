@@ -4,7 +4,8 @@
 // (residual_pruning.hpp): optimum 0 ends the loop at once, an integral optimum is applied as
 // it is, and otherwise its duals fix at 0 every arc no improving circulation can use. Only the
 // remaining arcs go to the paper's reduction: a perfect b-matching with throughflow limit 2
-// (bmatching.hpp), then a perfect matching (matching_gadgets.hpp) solved by LEMON, whose
+// (bmatching.hpp), then a perfect matching (matching_gadgets.hpp) solved by our blossom
+// solver warm-started from the LP's duals and integral flow (or by LEMON from scratch), whose
 // circulation is applied. A round that does not lower the true objective — recomputed in
 // double from the integer flow — ends the loop: by the paper's Theorem 3.8 no improving
 // circulation of any size then exists, so x is optimal (up to the integer scaling of costs,
@@ -16,10 +17,12 @@
 #include <vector>
 
 #include "bimdf/problem.hpp"
+#include "bimdf/solve.hpp"
 
 namespace bimdf::detail {
 
 struct RefineOptions {
+  MatchingBackend matching = MatchingBackend::Blossom;
   int64_t max_rounds = std::numeric_limits<int64_t>::max();
   double time_limit_s = std::numeric_limits<double>::infinity();
 };
@@ -32,6 +35,8 @@ struct RefineResult {
   bool converged = false;  // false: stopped by max_rounds or time_limit_s
   double time_build_s = 0, time_pruning_s = 0, time_matching_s = 0;
   int64_t matching_nodes = 0, matching_edges = 0;  // of the largest round
+  int64_t matching_free_vertices = 0;  // vertices the warm start left free, summed over rounds
+  int64_t lemon_fallbacks = 0;    // rounds whose weights were too large for our solver
 };
 
 // Requires a problem without outer edges and a flow feasible for it. Throws std::logic_error if

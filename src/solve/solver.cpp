@@ -87,6 +87,10 @@ Solver& Solver::lower_bound(bool enable) {
   lower_bound_ = enable;
   return *this;
 }
+Solver& Solver::matching(MatchingBackend backend) {
+  matching_ = backend;
+  return *this;
+}
 SolveStatus Solver::run() {
   detail::SolverConfig config;
   config.component.collapse_chains = collapse_chains_;
@@ -94,6 +98,7 @@ SolveStatus Solver::run() {
   config.component.exact = true;
   config.component.lower_bound = lower_bound_;
   if (max_rounds_ > 0) config.component.refine.max_rounds = max_rounds_;
+  config.component.refine.matching = matching_;
   if (time_limit_s_ > 0) config.time_limit_s = time_limit_s_;
   config.threads = threads_;
   solution_ = detail::solve_problem(problem_, config);

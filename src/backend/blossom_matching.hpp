@@ -1,0 +1,126 @@
+// Maximum-weight perfect matching with integer weights: Edmonds' primal-dual blossom algorithm,
+// our own implementation (no LEMON), made to be warm-started.
+//
+// Problem: an undirected graph (parallel edges allowed, no loops) with int64 weights w; find a
+// perfect matching of maximum total weight, or prove that none exists. The algorithm keeps a
+// feasible solution of the dual of Edmonds' matching polytope — a value y_v per vertex and
+// z_B ≥ 0 per blossom (odd vertex set) with y_u + y_v + Σ_{B ∋ u,v} z_B ≥ w_uv on every edge —
+// and a matching on tight edges (equality). Every free vertex roots an alternating tree, and
+// all trees grow together with one dual change δ (positive vertices −δ, negative +δ, positive
+// blossoms' z +2δ, negative −2δ). δ is never applied vertex by vertex: the moments at which an
+// edge becomes tight or a negative blossom's z reaches 0 sit in a priority queue, and a
+// vertex's dual is its stored value plus its top blossom's offset plus the change since that
+// blossom was labeled (lazy duals). A tight edge between two trees augments (both trees are
+// taken apart), inside one tree it forms a blossom; blossoms outlive the trees. A new blossom
+// keeps its largest child's vertices as they are and rebases only the others, so nested
+// blossoms cost their smaller parts; tops are found through path-compressed jumps.
+//
+// Warm start: `initial_duals` and `initial_matching` may be anything. Duals are first raised
+// until every edge is feasible, then only the given matched edges that are tight (and then
+// greedily any tight edge) are kept, so a bad start costs time, never correctness. From the
+// LP relaxation's duals and integral flow (refinement, solve/refine.cpp) only a few hundred of
+// ~10^5 vertices stay free.
+//
+// Guarantee: `run()` returns Optimal only after checking the certificate — a perfect matching,
+// feasible duals, tight matched edges, and every blossom with z > 0 holding ⌊|B|/2⌋ matched
+// edges — so the matching is optimal by LP duality, whatever the path to it (a failed check
+// throws std::logic_error: a bug). Internally weights and duals are doubled and start even, so
+// every dual change is an integer (all labeled vertices share the parity of their duals).
+// |w|·(n + 1) must stay below 2^58 (checked: std::invalid_argument).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace bimdf::detail {
+
+class BlossomMatching {
+ public:
+  enum class Status { NotRun, Optimal, NoPerfectMatching };
+
+  // Copies the graph. Throws std::invalid_argument on a loop, an end out of range, mismatched
+  // sizes or weights too large for the overflow bound above.
+  BlossomMatching(int num_nodes, std::span<const int> end_a, std::span<const int> end_b,
+                  std::span<const int64_t> weight);
+
+  // Optional: a dual value per vertex, in the units of the weights.
+  BlossomMatching& initial_duals(std::span<const int64_t> y);
+  // Optional: per edge, 1 if it starts matched. Edges that are not tight after the duals are
+  // made feasible, or that touch an already matched vertex, are dropped.
+  BlossomMatching& initial_matching(std::span<const char> matched);
+
+  Status run();
+
+  Status status() const { return status_; }
+  // After Optimal: per edge, 1 if matched.
+  std::vector<char> matched_edges() const;
+  int64_t matching_weight() const;
+  // Vertices the start left free, i.e. trees grown (a measure of the warm start's quality).
+  int64_t free_after_start() const { return free_after_start_; }
+
+ private:
+  enum Label : int8_t { kNone, kPlus, kMinus };
+  struct Event {
+    int64_t time;
+    int kind;  // 0: edge, 1: expand a negative blossom
+    int id;
+    bool operator>(const Event& o) const { return time > o.time; }
+  };
+
+  int other(int e, int v) const { return end_a_[e] ^ end_b_[e] ^ v; }
+  bool nontrivial(int b) const { return b >= n_; }
+  int64_t dual(int v);  // current y of a vertex (doubled units)
+  int64_t slack(int e);
+  void leaves(int b, std::vector<int>& out) const;
+  void bring_up_to_date(int b);
+  int top_of(int v);
+  void set_label(int b, Label label, int edge, int from, int to, int tree);
+  void scan_plus(int b);
+  void push_edge_events_towards(int b);
+  bool grow_forest();
+  void grow(int u, int v, int e);
+  void make_blossom(int u, int v, int e);
+  void expand(int b);
+  void augment(int u, int v, int e);
+  void flip_to_root(int x, std::vector<int>& pairs);
+  void dissolve_tree(int tree);
+  void rotate_to(int b, int v);
+  int tree_parent(int b);
+  int new_blossom_id();
+  void start();
+  bool certificate_holds();
+
+  int n_;
+  std::vector<int> end_a_, end_b_;
+  std::vector<int64_t> w2_;  // doubled weights
+  std::vector<int> adj_start_, adj_edge_;
+  // Doubled dual of vertex v: y_[v] + off_[top] + the change since its top was labeled.
+  std::vector<int64_t> y_;
+  std::vector<int> mate_;  // matched edge per vertex or -1
+  std::vector<char> start_match_;
+
+  // Blossom forest: ids < n are vertices, ids ≥ n blossoms.
+  std::vector<int> parent_, base_;
+  std::vector<int> jump_, jump_gen_, gen_, path_;  // see top_of
+  std::vector<std::vector<int>> children_, cyc_edge_, cyc_from_, cyc_to_;
+  std::vector<int64_t> z_, off_;
+  std::vector<int> size_;  // vertices in a blossom
+  std::vector<int> free_ids_;
+  // The forest, per top blossom; a tree is named by its root vertex.
+  std::vector<Label> label_;
+  std::vector<int> tree_;
+  std::vector<std::vector<int>> tree_tops_;  // per tree, its tops (stale entries skipped)
+  std::vector<int> label_edge_, label_from_, label_to_;
+  std::vector<int64_t> label_time_;
+  std::vector<int> mark_;
+  int mark_stamp_ = 0;
+  int64_t now_ = 0;
+  std::vector<Event> heap_;
+  std::vector<int> scratch_;
+
+  Status status_ = Status::NotRun;
+  int64_t free_after_start_ = 0;
+};
+
+}  // namespace bimdf::detail

@@ -1,0 +1,209 @@
+// BlossomMatching's set-up (graph, warm start), its entry point and the optimality certificate
+// it checks before answering; the forest growth itself is in blossom_matching.cpp.
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "backend/blossom_matching.hpp"
+
+namespace bimdf::detail {
+
+BlossomMatching::BlossomMatching(int num_nodes, std::span<const int> end_a,
+                                 std::span<const int> end_b, std::span<const int64_t> weight)
+    : n_(num_nodes), end_a_(end_a.begin(), end_a.end()), end_b_(end_b.begin(), end_b.end()) {
+  const size_t m = end_a.size();
+  if (num_nodes < 0 || end_b.size() != m || weight.size() != m)
+    throw std::invalid_argument("blossom matching: edge arrays of different sizes");
+  int64_t largest = 0;
+  for (int64_t w : weight) largest = std::max(largest, w < 0 ? -w : w);
+  if (largest >= (int64_t{1} << 58) / (int64_t{num_nodes} + 1))
+    throw std::invalid_argument("blossom matching: |weight| * (nodes + 1) must stay below 2^58");
+  w2_.resize(m);
+  adj_start_.assign(n_ + 1, 0);
+  for (size_t e = 0; e < m; ++e) {
+    const int a = end_a_[e], b = end_b_[e];
+    if (a < 0 || b < 0 || a >= n_ || b >= n_ || a == b)
+      throw std::invalid_argument("blossom matching: edge " + std::to_string(e) +
+                                  " is a loop or has an end out of range");
+    w2_[e] = 2 * weight[e];
+    ++adj_start_[a + 1];
+    ++adj_start_[b + 1];
+  }
+  for (int v = 0; v < n_; ++v) adj_start_[v + 1] += adj_start_[v];
+  adj_edge_.resize(2 * m);
+  std::vector<int> fill(adj_start_.begin(), adj_start_.end() - 1);
+  for (size_t e = 0; e < m; ++e) {
+    adj_edge_[fill[end_a_[e]]++] = static_cast<int>(e);
+    adj_edge_[fill[end_b_[e]]++] = static_cast<int>(e);
+  }
+}
+
+BlossomMatching& BlossomMatching::initial_duals(std::span<const int64_t> y) {
+  if (static_cast<int>(y.size()) != n_)
+    throw std::invalid_argument("blossom matching: one initial dual per vertex expected");
+  y_.resize(n_);
+  for (int v = 0; v < n_; ++v) y_[v] = 2 * y[v];
+  return *this;
+}
+
+BlossomMatching& BlossomMatching::initial_matching(std::span<const char> matched) {
+  if (matched.size() != end_a_.size())
+    throw std::invalid_argument("blossom matching: one initial flag per edge expected");
+  start_match_.assign(matched.begin(), matched.end());
+  return *this;
+}
+
+void BlossomMatching::start() {
+  const int m = static_cast<int>(end_a_.size());
+  parent_.assign(n_, -1);
+  base_.resize(n_);
+  for (int v = 0; v < n_; ++v) base_[v] = v;
+  jump_.assign(n_, -1);
+  jump_gen_.assign(n_, 0);
+  gen_.assign(n_, 0);
+  children_.assign(n_, {});
+  cyc_edge_.assign(n_, {});
+  cyc_from_.assign(n_, {});
+  cyc_to_.assign(n_, {});
+  z_.assign(n_, 0);
+  off_.assign(n_, 0);
+  size_.assign(n_, 1);
+  label_.assign(n_, kNone);
+  label_edge_.assign(n_, -1);
+  label_from_.assign(n_, -1);
+  label_to_.assign(n_, -1);
+  label_time_.assign(n_, 0);
+  tree_.assign(n_, -1);
+  tree_tops_.assign(n_, {});
+  mark_.assign(n_, 0);
+  free_ids_.clear();
+
+  const bool given = static_cast<int>(y_.size()) == n_;
+  if (!given) {
+    // y_v = max incident w makes every edge feasible; then lower each y_v as far as its edges
+    // allow, so every vertex has a tight edge for the greedy matching below.
+    y_.assign(n_, 0);
+    for (int v = 0; v < n_; ++v) {
+      int64_t best = std::numeric_limits<int64_t>::min();
+      for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k)
+        best = std::max(best, w2_[adj_edge_[k]] / 2);
+      // Even, like every dual the start hands over: then all trees share their duals' parity
+      // and every dual change is an integer (see the header).
+      if (best != std::numeric_limits<int64_t>::min()) y_[v] = best + (best & 1);
+    }
+  }
+  for (int e = 0; e < m; ++e) {
+    const int64_t deficit = w2_[e] - y_[end_a_[e]] - y_[end_b_[e]];
+    if (deficit > 0) y_[end_a_[e]] += deficit;
+  }
+  if (!given) {
+    for (int v = 0; v < n_; ++v) {
+      if (adj_start_[v] == adj_start_[v + 1]) continue;
+      int64_t need = std::numeric_limits<int64_t>::min();
+      for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k) {
+        const int e = adj_edge_[k];
+        need = std::max(need, w2_[e] - y_[other(e, v)]);
+      }
+      y_[v] = need;
+    }
+  }
+  mate_.assign(n_, -1);
+  auto try_match = [&](int e) {
+    const int a = end_a_[e], b = end_b_[e];
+    if (mate_[a] < 0 && mate_[b] < 0 && y_[a] + y_[b] == w2_[e]) mate_[a] = mate_[b] = e;
+  };
+  if (static_cast<int>(start_match_.size()) == m)
+    for (int e = 0; e < m; ++e)
+      if (start_match_[e]) try_match(e);
+  for (int e = 0; e < m; ++e) try_match(e);
+}
+
+BlossomMatching::Status BlossomMatching::run() {
+  start();
+  if (!grow_forest()) return status_ = Status::NoPerfectMatching;
+  if (!certificate_holds())
+    throw std::logic_error("blossom matching: the optimality certificate does not hold");
+  return status_ = Status::Optimal;
+}
+
+// Perfect matching + feasible duals + tight matched edges + full blossoms where z > 0.
+// Perfect matching + feasible duals + tight matched edges + full blossoms where z > 0, in
+// O((n + m) log depth) however deeply blossoms nest: the z of the blossoms holding both ends of
+// an edge is a prefix sum at the ends' lowest common blossom (binary lifting), and a blossom's
+// vertices matched outside it are counted by subtree sums (+1 at each end of a matched edge,
+// −2 at their lowest common blossom).
+bool BlossomMatching::certificate_holds() {
+  const int ids = static_cast<int>(parent_.size());
+  for (int v = 0; v < n_; ++v) {
+    const int e = mate_[v];
+    if (e < 0 || (end_a_[e] != v && end_b_[e] != v) || mate_[other(e, v)] != e) return false;
+  }
+  // Preorder of the blossom forest (parents first), depth and z summed from the top down.
+  std::vector<int> order, depth(ids, 0);
+  std::vector<int64_t> z_down(ids, 0);
+  for (int b = 0; b < ids; ++b) {
+    const bool live = b < n_ || !children_[b].empty();
+    if (!live || parent_[b] >= 0) continue;
+    std::vector<int> stack{b};
+    while (!stack.empty()) {
+      const int x = stack.back();
+      stack.pop_back();
+      order.push_back(x);
+      const int p = parent_[x];
+      depth[x] = p >= 0 ? depth[p] + 1 : 0;
+      if (nontrivial(x) && z_[x] < 0) return false;
+      z_down[x] = (nontrivial(x) ? z_[x] : 0) + (p >= 0 ? z_down[p] : 0);
+      if (nontrivial(x)) stack.insert(stack.end(), children_[x].begin(), children_[x].end());
+    }
+  }
+  int levels = 1;
+  while ((1 << levels) < ids) ++levels;
+  std::vector<std::vector<int>> up(levels, std::vector<int>(ids, -1));
+  for (int x : order) {
+    up[0][x] = parent_[x];
+    for (int k = 1; k < levels; ++k) up[k][x] = up[k - 1][x] < 0 ? -1 : up[k - 1][up[k - 1][x]];
+  }
+  auto lowest_common = [&](int a, int b) {
+    if (depth[a] < depth[b]) std::swap(a, b);
+    for (int k = levels - 1; k >= 0; --k)
+      if (up[k][a] >= 0 && depth[up[k][a]] >= depth[b]) a = up[k][a];
+    if (a == b) return a;
+    for (int k = levels - 1; k >= 0; --k)
+      if (up[k][a] != up[k][b]) a = up[k][a], b = up[k][b];
+    return up[0][a];  // -1: different top blossoms
+  };
+  std::vector<int64_t> outside(ids, 0);
+  for (int e = 0; e < static_cast<int>(end_a_.size()); ++e) {
+    const int u = end_a_[e], v = end_b_[e];
+    const int common = lowest_common(u, v);
+    const int64_t s = dual(u) + dual(v) + (common >= 0 ? z_down[common] : 0) - w2_[e];
+    if (s < 0 || (mate_[u] == e && s != 0)) return false;
+    if (mate_[u] == e) {
+      ++outside[u];
+      ++outside[v];
+      if (common >= 0) outside[common] -= 2;
+    }
+  }
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {
+    if (nontrivial(*it) && z_[*it] > 0 && outside[*it] > 1) return false;
+    if (parent_[*it] >= 0) outside[parent_[*it]] += outside[*it];
+  }
+  return true;
+}
+
+std::vector<char> BlossomMatching::matched_edges() const {
+  std::vector<char> out(end_a_.size(), 0);
+  for (int v = 0; v < n_; ++v)
+    if (mate_[v] >= 0) out[mate_[v]] = 1;
+  return out;
+}
+
+int64_t BlossomMatching::matching_weight() const {
+  int64_t total = 0;
+  for (int v = 0; v < n_; ++v)
+    if (mate_[v] >= 0 && v == std::min(end_a_[mate_[v]], end_b_[mate_[v]])) total += w2_[mate_[v]];
+  return total / 2;
+}
+
+}  // namespace bimdf::detail

@@ -1,0 +1,241 @@
+// Our perfect matching solver (backend/blossom_matching.hpp) against two independent oracles:
+// enumeration of every perfect matching on small graphs, and LEMON's solver on larger ones;
+// with and without warm starts, which may change the path but never the optimum.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "backend/blossom_matching.hpp"
+#include "backend/perfect_matching.hpp"
+#include "bimdf/problem.hpp"
+#include "bimdf/solve.hpp"
+#include "random_problem.hpp"
+#include "reduce/bmatching.hpp"
+#include "reduce/matching_gadgets.hpp"
+
+namespace {
+
+using bimdf::detail::BlossomMatching;
+
+struct Graph {
+  int n = 0;
+  std::vector<int> a, b;
+  std::vector<int64_t> w;
+};
+
+// Largest weight over all perfect matchings, or nullopt: vertex 0 (the lowest unmatched) tries
+// every partner.
+std::optional<int64_t> brute_force(const Graph& g) {
+  std::vector<char> used(g.n, 0);
+  std::optional<int64_t> best;
+  std::function<void(int64_t)> go = [&](int64_t sum) {
+    int v = 0;
+    while (v < g.n && used[v]) ++v;
+    if (v == g.n) {
+      if (!best || sum > *best) best = sum;
+      return;
+    }
+    used[v] = 1;
+    for (size_t e = 0; e < g.a.size(); ++e) {
+      const int u = g.a[e] == v ? g.b[e] : g.b[e] == v ? g.a[e] : -1;
+      if (u < 0 || used[u]) continue;
+      used[u] = 1;
+      go(sum + g.w[e]);
+      used[u] = 0;
+    }
+    used[v] = 0;
+  };
+  go(0);
+  return best;
+}
+
+Graph random_graph(std::mt19937& rng, int n, int m, int max_weight) {
+  Graph g;
+  g.n = n;
+  for (int k = 0; k < m; ++k) {
+    const int a = static_cast<int>(rng() % n), b = static_cast<int>(rng() % n);
+    if (a == b) continue;
+    g.a.push_back(a);
+    g.b.push_back(b);
+    g.w.push_back(static_cast<int64_t>(rng() % (2 * max_weight + 1)) - max_weight);
+  }
+  return g;
+}
+
+// Runs the solver; checks that the matching is perfect and returns its weight.
+std::optional<int64_t> solve(const Graph& g, BlossomMatching& solver) {
+  if (solver.run() != BlossomMatching::Status::Optimal) return std::nullopt;
+  const std::vector<char> matched = solver.matched_edges();
+  std::vector<int> degree(g.n, 0);
+  int64_t sum = 0;
+  for (size_t e = 0; e < matched.size(); ++e)
+    if (matched[e]) {
+      ++degree[g.a[e]];
+      ++degree[g.b[e]];
+      sum += g.w[e];
+    }
+  for (int v = 0; v < g.n; ++v) EXPECT_EQ(degree[v], 1) << "vertex " << v;
+  EXPECT_EQ(sum, solver.matching_weight());
+  return sum;
+}
+
+TEST(BlossomMatching, EqualsEnumerationOnSmallGraphsFromAnyStart) {
+  std::mt19937 rng(7);
+  int with_matching = 0;
+  for (int it = 0; it < 3000; ++it) {
+    const int n = 2 * (1 + static_cast<int>(rng() % 5));
+    const Graph g = random_graph(rng, n, n / 2 + static_cast<int>(rng() % (3 * n)), 10);
+    BlossomMatching solver(g.n, g.a, g.b, g.w);
+    if (it % 3 == 1) {  // arbitrary duals: made feasible by the solver
+      std::vector<int64_t> y(g.n);
+      for (int64_t& x : y) x = static_cast<int64_t>(rng() % 41) - 20;
+      solver.initial_duals(y);
+    }
+    if (it % 4 == 2) {  // arbitrary matched flags: only consistent tight ones are kept
+      std::vector<char> flags(g.a.size());
+      for (char& f : flags) f = rng() % 3 == 0;
+      solver.initial_matching(flags);
+    }
+    const std::optional<int64_t> expected = brute_force(g);
+    const std::optional<int64_t> got = solve(g, solver);
+    ASSERT_EQ(got.has_value(), expected.has_value()) << "case " << it;
+    if (expected) {
+      EXPECT_EQ(*got, *expected) << "case " << it;
+      ++with_matching;
+    }
+  }
+  EXPECT_GT(with_matching, 1000);  // the cases are not mostly infeasible
+}
+
+TEST(BlossomMatching, EqualsLemonOnLargerGraphs) {
+  std::mt19937 rng(11);
+  for (int it = 0; it < 60; ++it) {
+    const int n = 2 * (20 + static_cast<int>(rng() % 200));
+    Graph g = random_graph(rng, n, 3 * n, 1000);
+    for (int v = 0; v + 1 < n; v += 2) {  // a planted perfect matching: always feasible
+      g.a.push_back(v);
+      g.b.push_back(v + 1);
+      g.w.push_back(static_cast<int64_t>(rng() % 2001) - 1000);
+    }
+    bimdf::detail::MatchingGraph mg;
+    mg.num_nodes = g.n;
+    mg.end_a = g.a;
+    mg.end_b = g.b;
+    for (int64_t w : g.w) mg.weight.push_back(static_cast<double>(w));
+    const std::optional<std::vector<char>> lemon = bimdf::detail::max_weight_perfect_matching(mg);
+    ASSERT_TRUE(lemon.has_value());
+    int64_t lemon_weight = 0;
+    for (size_t e = 0; e < g.w.size(); ++e) lemon_weight += (*lemon)[e] ? g.w[e] : 0;
+    BlossomMatching solver(g.n, g.a, g.b, g.w);
+    const std::optional<int64_t> got = solve(g, solver);
+    ASSERT_TRUE(got.has_value()) << "case " << it;
+    EXPECT_EQ(*got, lemon_weight) << "case " << it;
+  }
+}
+
+TEST(BlossomMatching, ReportsGraphsWithoutPerfectMatching) {
+  // Two triangles: six vertices, every one with edges, but each triangle is odd.
+  const std::vector<int> a{0, 1, 2, 3, 4, 5}, b{1, 2, 0, 4, 5, 3};
+  const std::vector<int64_t> w{1, 2, 3, 4, 5, 6};
+  BlossomMatching odd(6, a, b, w);
+  EXPECT_EQ(odd.run(), BlossomMatching::Status::NoPerfectMatching);
+  BlossomMatching isolated(8, a, b, w);  // vertices 6 and 7 have no edge
+  EXPECT_EQ(isolated.run(), BlossomMatching::Status::NoPerfectMatching);
+  BlossomMatching empty(0, {}, {}, {});
+  EXPECT_EQ(empty.run(), BlossomMatching::Status::Optimal);
+}
+
+TEST(BlossomMatching, RejectsBadInputWithAMessage) {
+  auto message = [](auto make) {
+    try {
+      make();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  const std::vector<int> a{0, 1}, b{1, 1};
+  const std::vector<int64_t> w{1, 1};
+  EXPECT_EQ(message([&] { BlossomMatching(2, a, b, w); }),
+            "blossom matching: edge 1 is a loop or has an end out of range");
+  EXPECT_EQ(message([&] { BlossomMatching(2, std::vector<int>{0}, std::vector<int>{2}, w); }),
+            "blossom matching: edge arrays of different sizes");
+  EXPECT_EQ(message([&] {
+              BlossomMatching(2, std::vector<int>{0}, std::vector<int>{1},
+                              std::vector<int64_t>{int64_t{1} << 57});
+            }),
+            "blossom matching: |weight| * (nodes + 1) must stay below 2^58");
+  BlossomMatching ok(2, std::vector<int>{0}, std::vector<int>{1}, std::vector<int64_t>{5});
+  EXPECT_EQ(message([&] { ok.initial_duals(std::vector<int64_t>{1}); }),
+            "blossom matching: one initial dual per vertex expected");
+}
+
+// The gadget duals keep every edge at a gadget feasible (slack ≥ 0) whatever the b-duals, and
+// the greedy matching uses only edges of the matching graph, each vertex at most once.
+TEST(BlossomMatching, GadgetDualsAreFeasibleOnEveryGadgetEdge) {
+  std::mt19937 rng(5);
+  for (int it = 0; it < 200; ++it) {
+    bimdf::detail::BMatching bm;
+    const int nodes = 2 + static_cast<int>(rng() % 6);
+    bm.degree.assign(nodes, 2);
+    for (int e = 0; e < 3 * nodes; ++e) {
+      bm.end_a.push_back(static_cast<int>(rng() % nodes));
+      bm.end_b.push_back(static_cast<int>(rng() % nodes));
+      bm.capacity.push_back(1);
+      bm.weight.push_back(static_cast<double>(static_cast<int>(rng() % 21) - 10));
+    }
+    const bimdf::detail::MatchingReduction r = bimdf::detail::reduce_to_perfect_matching(bm);
+    std::vector<int64_t> bdual(nodes), bweight(bm.num_edges());
+    for (int64_t& y : bdual) y = static_cast<int64_t>(rng() % 21) - 10;
+    for (int e = 0; e < bm.num_edges(); ++e) bweight[e] = static_cast<int64_t>(bm.weight[e]);
+    const std::vector<int64_t> y = bimdf::detail::gadget_duals(bm, r, bdual, bweight);
+    const bimdf::detail::MatchingGraph& g = r.graph;
+    for (int e = 0; e < g.num_edges(); ++e) {
+      if (r.bnode_of_node[g.end_a[e]] >= 0 && r.bnode_of_node[g.end_b[e]] >= 0) continue;
+      EXPECT_GE(y[g.end_a[e]] + y[g.end_b[e]], static_cast<int64_t>(g.weight[e]))
+          << "case " << it << ", edge " << e;
+    }
+    std::vector<int> value(bm.num_edges());
+    for (int& v : value) v = static_cast<int>(rng() % 2);
+    const std::vector<char> matched = bimdf::detail::gadget_matching(bm, r, value);
+    std::vector<int> degree(g.num_nodes, 0);
+    for (int e = 0; e < g.num_edges(); ++e)
+      if (matched[e]) ++degree[g.end_a[e]], ++degree[g.end_b[e]];
+    for (int v = 0; v < g.num_nodes; ++v) EXPECT_LE(degree[v], 1) << "case " << it;
+  }
+}
+
+// The whole exact solver with either matching backend reaches the same optimum.
+TEST(BlossomMatching, ExactSolverAgreesWithTheLemonBackend) {
+  std::mt19937_64 rng(3);
+  bimdf::testing::RandomProblemOptions options;
+  options.min_nodes = 15;
+  options.max_nodes = 40;
+  options.min_edges = 30;
+  options.max_edges = 90;
+  int optimal = 0;
+  int64_t matchings = 0;
+  for (int seed = 0; seed < 40; ++seed) {
+    bimdf::Problem p = bimdf::testing::random_problem(rng, options);
+    bimdf::testing::plant_feasible_demands(p, rng);
+    bimdf::Solver ours(p), lemon(p);
+    const bimdf::SolveStatus so = ours.matching(bimdf::MatchingBackend::Blossom).run();
+    const bimdf::SolveStatus sl = lemon.matching(bimdf::MatchingBackend::Lemon).run();
+    ASSERT_EQ(so, sl) << "seed " << seed;
+    if (so != bimdf::SolveStatus::Optimal) continue;
+    ++optimal;
+    matchings += std::get<int64_t>(ours.solution().stats.at("matchings_solved"));
+    const double a = ours.solution().objective, b = lemon.solution().objective;
+    EXPECT_NEAR(a, b, 1e-9 * std::max(1.0, std::fabs(b))) << "seed " << seed;
+  }
+  EXPECT_GE(optimal, 30);
+  EXPECT_GT(matchings, 20);  // the LP alone did not settle them
+}
+
+}  // namespace
