@@ -231,6 +231,7 @@ TEST(BlossomMatching, ExactSolverAgreesWithTheLemonBackend) {
     if (so != bimdf::SolveStatus::Optimal) continue;
     ++optimal;
     matchings += std::get<int64_t>(ours.solution().stats.at("matchings_solved"));
+    EXPECT_EQ(std::get<int64_t>(ours.solution().stats.at("matching_lemon_fallbacks")), 0);
     const double a = ours.solution().objective, b = lemon.solution().objective;
     EXPECT_NEAR(a, b, 1e-9 * std::max(1.0, std::fabs(b))) << "seed " << seed;
   }

@@ -239,6 +239,8 @@ TEST(ExactShared, EveryInstanceReachesItsRecordedOptimum) {
     // The recorded optima have 9 decimals.
     EXPECT_NEAR(s.objective, optimum, 6e-10 + 1e-9 * optimum) << file;
     EXPECT_LE(std::get<double>(s.stats.at("lower_bound")), s.objective + 1e-9) << file;
+    // Every matching by our blossom solver, none left to LEMON.
+    EXPECT_EQ(std::get<int64_t>(s.stats.at("matching_lemon_fallbacks")), 0) << file;
     ++count;
   }
   EXPECT_GE(count, 60);
