@@ -338,23 +338,26 @@ void BlossomMatching::augment(int u, int v, int e) {
   flip_to_root(u, pairs);
   flip_to_root(v, pairs);
   for (size_t i = 0; i < pairs.size(); i += 3) mate_[pairs[i]] = mate_[pairs[i + 1]] = pairs[i + 2];
-  dissolve_tree(tree_u);
-  dissolve_tree(tree_v);
+  std::vector<int> were_minus;
+  dissolve_tree(tree_u, were_minus);
+  dissolve_tree(tree_v, were_minus);
+  for (int b : were_minus) push_edge_events_towards(b);
 }
 
-// Unlabels every top blossom of a tree; edges from other trees' positive vertices towards its
+// Unlabels every top blossom of a tree and collects the negative ones: edges from other trees'
+// positive vertices towards those now lose slack and must be queued (towards former positive
+// ones they lose it more slowly than before, so their queued events come early and are
+// re-checked).
 // vertices now lose slack, so they are queued.
-void BlossomMatching::dissolve_tree(int tree) {
-  std::vector<int> tops;
+void BlossomMatching::dissolve_tree(int tree, std::vector<int>& were_minus) {
   for (int b : tree_tops_[tree])
     if (parent_[b] < 0 && label_[b] != kNone && tree_[b] == tree) {
       bring_up_to_date(b);
+      if (label_[b] == kMinus) were_minus.push_back(b);
       label_[b] = kNone;
       tree_[b] = -1;
-      tops.push_back(b);
     }
   tree_tops_[tree].clear();
-  for (int b : tops) push_edge_events_towards(b);
 }
 
 // Grows an alternating tree from every free vertex at once, all with the same dual change.
@@ -401,6 +404,8 @@ bool BlossomMatching::grow_forest() {
     const int64_t s = slack(e);
     if (s < 0) throw std::logic_error("blossom matching: an edge lost dual feasibility");
     if (s > 0) {
+      if (lv == kPlus && (s & 1))
+        throw std::logic_error("blossom matching: odd slack between two positive vertices");
       heap_.push_back({now_ + (lv == kPlus ? s / 2 : s), kEdgeEvent, e});
       std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
       continue;

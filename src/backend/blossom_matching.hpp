@@ -44,7 +44,8 @@ class BlossomMatching {
   BlossomMatching(int num_nodes, std::span<const int> end_a, std::span<const int> end_b,
                   std::span<const int64_t> weight);
 
-  // Optional: a dual value per vertex, in the units of the weights.
+  // Optional: a dual value per vertex, in the units of the weights, each below 2^58 in
+  // magnitude (std::invalid_argument otherwise).
   BlossomMatching& initial_duals(std::span<const int64_t> y);
   // Optional: per edge, 1 if it starts matched. Edges that are not tight after the duals are
   // made feasible, or that touch an already matched vertex, are dropped.
@@ -84,7 +85,7 @@ class BlossomMatching {
   void expand(int b);
   void augment(int u, int v, int e);
   void flip_to_root(int x, std::vector<int>& pairs);
-  void dissolve_tree(int tree);
+  void dissolve_tree(int tree, std::vector<int>& were_minus);
   void rotate_to(int b, int v);
   int tree_parent(int b);
   int new_blossom_id();

@@ -15,9 +15,10 @@ BlossomMatching::BlossomMatching(int num_nodes, std::span<const int> end_a,
   const size_t m = end_a.size();
   if (num_nodes < 0 || end_b.size() != m || weight.size() != m)
     throw std::invalid_argument("blossom matching: edge arrays of different sizes");
-  int64_t largest = 0;
-  for (int64_t w : weight) largest = std::max(largest, w < 0 ? -w : w);
-  if (largest >= (int64_t{1} << 58) / (int64_t{num_nodes} + 1))
+  uint64_t largest = 0;  // unsigned: |INT64_MIN| fits
+  for (int64_t w : weight)
+    largest = std::max(largest, w < 0 ? uint64_t{0} - static_cast<uint64_t>(w) : uint64_t(w));
+  if (largest >= (uint64_t{1} << 58) / (uint64_t(num_nodes) + 1))
     throw std::invalid_argument("blossom matching: |weight| * (nodes + 1) must stay below 2^58");
   w2_.resize(m);
   adj_start_.assign(n_ + 1, 0);
@@ -42,6 +43,9 @@ BlossomMatching::BlossomMatching(int num_nodes, std::span<const int> end_a,
 BlossomMatching& BlossomMatching::initial_duals(std::span<const int64_t> y) {
   if (static_cast<int>(y.size()) != n_)
     throw std::invalid_argument("blossom matching: one initial dual per vertex expected");
+  for (int64_t x : y)
+    if (x <= -(int64_t{1} << 58) || x >= (int64_t{1} << 58))
+      throw std::invalid_argument("blossom matching: initial duals must stay below 2^58");
   y_.resize(n_);
   for (int v = 0; v < n_; ++v) y_[v] = 2 * y[v];
   return *this;
@@ -127,7 +131,6 @@ BlossomMatching::Status BlossomMatching::run() {
   return status_ = Status::Optimal;
 }
 
-// Perfect matching + feasible duals + tight matched edges + full blossoms where z > 0.
 // Perfect matching + feasible duals + tight matched edges + full blossoms where z > 0, in
 // O((n + m) log depth) however deeply blossoms nest: the z of the blossoms holding both ends of
 // an edge is a prefix sum at the ends' lowest common blossom (binary lifting), and a blossom's
@@ -157,8 +160,9 @@ bool BlossomMatching::certificate_holds() {
       if (nontrivial(x)) stack.insert(stack.end(), children_[x].begin(), children_[x].end());
     }
   }
-  int levels = 1;
-  while ((1 << levels) < ids) ++levels;
+  int levels = 1, deepest = 0;
+  for (int x : order) deepest = std::max(deepest, depth[x]);
+  while ((1 << levels) <= deepest) ++levels;
   std::vector<std::vector<int>> up(levels, std::vector<int>(ids, -1));
   for (int x : order) {
     up[0][x] = parent_[x];

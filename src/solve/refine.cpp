@@ -27,8 +27,10 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 // The round's perfect matching by our blossom solver, warm-started from the pruning LP: its
 // integer costs (doubled) are the matching weights, so its duals carry over exactly (see
-// residual_pruning.hpp and matching_gadgets.hpp). Falls back to LEMON when the weights exceed
-// the solver's overflow bound or when asked to.
+// residual_pruning.hpp and matching_gadgets.hpp). LEMON answers instead when asked to, when
+// the input exceeds the solver's overflow bounds, and when the solver reports anything but an
+// optimum (the all-slack matching always exists, so "no perfect matching" would be our bug) or
+// fails an internal check; all but the first are counted in lemon_fallbacks.
 std::optional<std::vector<char>> solve_round_matching(
     const BMatching& bm, std::span<const int> arc_of_edge, const MatchingReduction& mm,
     const ResidualPruning& pruned, const RefineOptions& options, RefineResult& r) {
@@ -45,7 +47,8 @@ std::optional<std::vector<char>> solve_round_matching(
     bnode_dual[2 * v] = pruned.node_dual[v];
     bnode_dual[2 * v + 1] = -pruned.node_dual[v];
   }
-  // The LP's integral part: one unit on each reduced arc it fills (2y = 2).
+  // The LP's integral part: one unit on each reduced arc it fills (2y = 2); gadget_matching
+  // uses it on capacitated b-edges only (uncapacitated ones get slack pairs).
   std::vector<int> used(bm.num_edges(), 0);
   for (int e = 0; e < bm.num_edges(); ++e)
     if (arc_of_edge[e] >= 0) used[e] = static_cast<int>(pruned.twice_flow[arc_of_edge[e]] / 2);
@@ -57,11 +60,14 @@ std::optional<std::vector<char>> solve_round_matching(
     // own (rotate_to): the same headroom as for LEMON (backend/perfect_matching.cpp).
     BlossomMatching::Status status = BlossomMatching::Status::NotRun;
     run_with_stack(matching_stack_bytes(g.num_nodes), [&] { status = solver.run(); });
-    if (status != BlossomMatching::Status::Optimal) return std::nullopt;
+    if (status != BlossomMatching::Status::Optimal) {
+      ++r.lemon_fallbacks;
+      return max_weight_perfect_matching(mm.graph);
+    }
     r.matching_free_vertices += solver.free_after_start();
     return solver.matched_edges();
   } catch (const std::invalid_argument&) {
-    ++r.lemon_fallbacks;  // weights beyond the overflow bound
+    ++r.lemon_fallbacks;  // weights or duals beyond the overflow bounds
     return max_weight_perfect_matching(mm.graph);
   } catch (const std::logic_error&) {
     // A broken invariant or certificate: a bug of ours, never a wrong answer. LEMON answers
