@@ -121,7 +121,7 @@ std::string human_report(const Solution& s, bool exact, bool verbose) {
                            stat_text(s, "matching_edges_max") + " edges; " +
                            stat_text(s, "matching_free_after_warm_start") +
                            " vertices left free by the warm starts, " +
-                           stat_text(s, "matching_lemon_fallbacks") + " rounds solved by LEMON");
+                           stat_text(s, "matching_lemon_fallbacks") + " fallbacks to LEMON");
   }
   return t;
 }

@@ -13,6 +13,11 @@ constexpr int kExpandEvent = 1;
 
 }  // namespace
 
+void BlossomMatching::push_event(int64_t time, int kind, int id) {
+  heap_.push_back({time, kind, id});
+  std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+}
+
 int64_t BlossomMatching::dual(int v) {
   const int b = top_of(v);
   const int64_t t = now_ - label_time_[b];
@@ -81,8 +86,7 @@ void BlossomMatching::set_label(int b, Label label, int edge, int from, int to, 
   label_to_[b] = to;
   if (label == kPlus) scan_plus(b);
   if (label == kMinus && nontrivial(b)) {
-    heap_.push_back({now_ + z_[b] / 2, kExpandEvent, b});
-    std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+    push_event(now_ + z_[b] / 2, kExpandEvent, b);
   }
 }
 
@@ -97,8 +101,7 @@ void BlossomMatching::scan_plus(int b) {
       const int64_t s = slack(e);
       if (label_[bv] == kPlus && (s & 1))
         throw std::logic_error("blossom matching: odd slack between two positive vertices");
-      heap_.push_back({now_ + (label_[bv] == kPlus ? s / 2 : s), kEdgeEvent, e});
-      std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+      push_event(now_ + (label_[bv] == kPlus ? s / 2 : s), kEdgeEvent, e);
     }
   }
 }
@@ -111,8 +114,7 @@ void BlossomMatching::push_edge_events_towards(int b) {
     for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k) {
       const int e = adj_edge_[k];
       if (label_[top_of(other(e, v))] != kPlus) continue;
-      heap_.push_back({now_ + slack(e), kEdgeEvent, e});
-      std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+      push_event(now_ + slack(e), kEdgeEvent, e);
     }
 }
 
@@ -384,8 +386,7 @@ bool BlossomMatching::grow_forest() {
       const int64_t z = z_[b] - 2 * (now_ - label_time_[b]);
       if (z < 0) throw std::logic_error("blossom matching: negative blossom dual");
       if (z > 0) {
-        heap_.push_back({now_ + z / 2, kExpandEvent, b});
-        std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+        push_event(now_ + z / 2, kExpandEvent, b);
       } else {
         expand(b);
       }
@@ -406,8 +407,7 @@ bool BlossomMatching::grow_forest() {
     if (s > 0) {
       if (lv == kPlus && (s & 1))
         throw std::logic_error("blossom matching: odd slack between two positive vertices");
-      heap_.push_back({now_ + (lv == kPlus ? s / 2 : s), kEdgeEvent, e});
-      std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+      push_event(now_ + (lv == kPlus ? s / 2 : s), kEdgeEvent, e);
       continue;
     }
     if (lv == kNone) {

@@ -79,6 +79,7 @@ class BlossomMatching {
   void set_label(int b, Label label, int edge, int from, int to, int tree);
   void scan_plus(int b);
   void push_edge_events_towards(int b);
+  void push_event(int64_t time, int kind, int id);
   bool grow_forest();
   void grow(int u, int v, int e);
   void make_blossom(int u, int v, int e);

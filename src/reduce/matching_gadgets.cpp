@@ -5,6 +5,17 @@
 #include <stdexcept>
 
 namespace bimdf::detail {
+namespace {
+
+// Whether b-edge e becomes gadgets (its capacity can bind) rather than the complete bipartite
+// graph between the copies of its ends (for a loop: between distinct copies).
+bool uses_gadgets(const BMatching& bm, int e) {
+  const int p = bm.end_a[e], q = bm.end_b[e];
+  return p == q ? bm.capacity[e] < bm.degree[p] / 2
+                : bm.capacity[e] < std::min(bm.degree[p], bm.degree[q]);
+}
+
+}  // namespace
 
 MatchingReduction reduce_to_perfect_matching(const BMatching& bm) {
   MatchingReduction r;
@@ -33,15 +44,9 @@ MatchingReduction reduce_to_perfect_matching(const BMatching& bm) {
     const int p = bm.end_a[e], q = bm.end_b[e];
     const double w = bm.weight[e];
     const int kappa = bm.capacity[e];
-    if (p == q) {
-      if (kappa >= bm.degree[p] / 2) {
-        for (int64_t i = first[p]; i < first[p + 1]; ++i)
-          for (int64_t j = i + 1; j < first[p + 1]; ++j) add(i, j, w, e);
-        continue;
-      }
-    } else if (kappa >= std::min(bm.degree[p], bm.degree[q])) {
+    if (!uses_gadgets(bm, e)) {
       for (int64_t i = first[p]; i < first[p + 1]; ++i)
-        for (int64_t j = first[q]; j < first[q + 1]; ++j) add(i, j, w, e);
+        for (int64_t j = p == q ? i + 1 : first[q]; j < first[q + 1]; ++j) add(i, j, w, e);
       continue;
     }
     for (int k = 0; k < kappa; ++k) {
@@ -81,13 +86,8 @@ std::vector<char> gadget_matching(const BMatching& bm, const MatchingReduction& 
   std::vector<int> first(bm.num_nodes() + 1, 0), used(bm.num_nodes(), 0);
   for (int w = 0; w < bm.num_nodes(); ++w) first[w + 1] = first[w] + bm.degree[w];
   std::vector<char> matched(r.graph.num_edges(), 0);
-  auto is_gadget = [&](int e) {
-    const int p = bm.end_a[e], q = bm.end_b[e];
-    return p == q ? bm.capacity[e] < bm.degree[p] / 2
-                  : bm.capacity[e] < std::min(bm.degree[p], bm.degree[q]);
-  };
   for (int e = 0; e < bm.num_edges(); ++e) {
-    if (!is_gadget(e)) continue;
+    if (!uses_gadgets(bm, e)) continue;
     const int p = bm.end_a[e], q = bm.end_b[e];
     const int dp = bm.degree[p], dq = bm.degree[q];
     for (int k = 0; k < bm.capacity[e]; ++k) {
@@ -102,7 +102,7 @@ std::vector<char> gadget_matching(const BMatching& bm, const MatchingReduction& 
   }
   for (int e = 0; e < bm.num_edges(); ++e) {
     const int p = bm.end_a[e], q = bm.end_b[e];
-    if (is_gadget(e) || p == q || bm.weight[e] != 0) continue;
+    if (uses_gadgets(bm, e) || p == q || bm.weight[e] != 0) continue;
     const int dq = bm.degree[q];
     while (used[p] < bm.degree[p] && used[q] < dq) {
       matched[r.first_edge_of_bedge[e] + used[p] * dq + used[q]] = 1;

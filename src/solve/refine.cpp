@@ -60,21 +60,16 @@ std::optional<std::vector<char>> solve_round_matching(
     // own (rotate_to): the same headroom as for LEMON (backend/perfect_matching.cpp).
     BlossomMatching::Status status = BlossomMatching::Status::NotRun;
     run_with_stack(matching_stack_bytes(g.num_nodes), [&] { status = solver.run(); });
-    if (status != BlossomMatching::Status::Optimal) {
-      ++r.lemon_fallbacks;
-      return max_weight_perfect_matching(mm.graph);
+    if (status == BlossomMatching::Status::Optimal) {
+      r.matching_free_vertices += solver.free_after_start();
+      return solver.matched_edges();
     }
-    r.matching_free_vertices += solver.free_after_start();
-    return solver.matched_edges();
-  } catch (const std::invalid_argument&) {
-    ++r.lemon_fallbacks;  // weights or duals beyond the overflow bounds
-    return max_weight_perfect_matching(mm.graph);
   } catch (const std::logic_error&) {
-    // A broken invariant or certificate: a bug of ours, never a wrong answer. LEMON answers
-    // instead; the count shows up in the statistics (and the tests require it to be 0).
-    ++r.lemon_fallbacks;
-    return max_weight_perfect_matching(mm.graph);
+    // Inputs beyond the overflow bounds (std::invalid_argument), or a broken invariant or
+    // certificate: a bug of ours, never a wrong answer.
   }
+  ++r.lemon_fallbacks;  // counted in the statistics; the tests require 0
+  return max_weight_perfect_matching(mm.graph);
 }
 
 }  // namespace
