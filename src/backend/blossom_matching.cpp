@@ -8,8 +8,10 @@
 namespace bimdf::detail {
 namespace {
 
-constexpr int kEdgeEvent = 0;
-constexpr int kExpandEvent = 1;
+constexpr int kEdgeEvent = 0;    // id: an edge between two positive tops may be tight
+constexpr int kExpandEvent = 1;  // id: a negative blossom whose z may have reached 0
+constexpr int kGrowEvent = 2;    // id: an unlabeled top whose grow_edge may be tight
+constexpr int64_t kNever = std::numeric_limits<int64_t>::max();
 
 }  // namespace
 
@@ -18,27 +20,29 @@ void BlossomMatching::push_event(int64_t time, int kind, int id) {
   std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
 }
 
-int64_t BlossomMatching::dual(int v) {
-  const int b = top_of(v);
-  const int64_t t = now_ - label_time_[b];
-  const int64_t y = y_[v] + off_[b];
-  return label_[b] == kPlus ? y - t : label_[b] == kMinus ? y + t : y;
+int64_t BlossomMatching::dual_in(int v, int b) const {
+  const int64_t t = now_ - top_[b].label_time;
+  const int64_t y = y_[v] + top_[b].off;
+  return top_[b].label == kPlus ? y - t : top_[b].label == kMinus ? y + t : y;
 }
+
+int64_t BlossomMatching::dual(int v) { return dual_in(v, top_of(v)); }
 
 int64_t BlossomMatching::slack(int e) { return dual(end_a_[e]) + dual(end_b_[e]) - w2_[e]; }
 
-void BlossomMatching::leaves(int b, std::vector<int>& out) const {
+void BlossomMatching::leaves(int b, std::vector<int>& out) {
   out.clear();
   if (!nontrivial(b)) {
     out.push_back(b);
     return;
   }
-  std::vector<int> stack{b};
+  std::vector<int>& stack = leaf_stack_;
+  stack.assign(1, b);
   while (!stack.empty()) {
     const int x = stack.back();
     stack.pop_back();
     if (nontrivial(x))
-      stack.insert(stack.end(), children_[x].begin(), children_[x].end());
+      stack.insert(stack.end(), cycle(x).children.begin(), cycle(x).children.end());
     else
       out.push_back(x);
   }
@@ -47,40 +51,46 @@ void BlossomMatching::leaves(int b, std::vector<int>& out) const {
 // Folds the dual change since the top blossom b was labeled into its offset (and its own z),
 // so that b can change label or structure: O(1), whatever b's size.
 void BlossomMatching::bring_up_to_date(int b) {
-  const int64_t t = now_ - label_time_[b];
-  if (label_[b] != kNone && t != 0) {
-    const int64_t sign = label_[b] == kPlus ? -1 : 1;
-    off_[b] += sign * t;
+  const int64_t t = now_ - top_[b].label_time;
+  if (top_[b].label != kNone && t != 0) {
+    const int64_t sign = top_[b].label == kPlus ? -1 : 1;
+    top_[b].off += sign * t;
     if (nontrivial(b)) z_[b] -= 2 * sign * t;
   }
-  label_time_[b] = now_;
+  top_[b].label_time = now_;
 }
 
 // The top blossom of v, found by walking up the blossom forest. Each id remembers a jump to
 // an ancestor found earlier (path compression); a jump is trusted only while its target lives
 // (same generation: only top blossoms are expanded, so a living target still contains it).
 int BlossomMatching::top_of(int v) {
+  const Link& lv = link_[v];
+  if (lv.parent < 0) return v;
+  // The common case: v's remembered jump still leads to a living top.
+  if (lv.jump >= 0 && lv.jump_gen == link_[lv.jump].gen && link_[lv.jump].parent < 0)
+    return lv.jump;
   int x = v;
   path_.clear();
   while (true) {
-    const int j = jump_[x];
-    const int next = j >= 0 && jump_gen_[x] == gen_[j] ? j : parent_[x];
+    const int j = link_[x].jump;
+    const int next = j >= 0 && link_[x].jump_gen == link_[j].gen ? j : link_[x].parent;
     if (next < 0) break;
     path_.push_back(x);
     x = next;
   }
   for (int p : path_) {
-    jump_[p] = x;
-    jump_gen_[p] = gen_[x];
+    link_[p].jump = x;
+    link_[p].jump_gen = link_[x].gen;
   }
   return x;
 }
 
 void BlossomMatching::set_label(int b, Label label, int edge, int from, int to, int tree) {
   bring_up_to_date(b);
-  tree_[b] = tree;
+  top_[b].tree = tree;
   tree_tops_[tree].push_back(b);
-  label_[b] = label;
+  top_[b].label = label;
+  top_[b].grow_time = kNever;
   label_edge_[b] = edge;
   label_from_[b] = from;
   label_to_[b] = to;
@@ -90,32 +100,55 @@ void BlossomMatching::set_label(int b, Label label, int edge, int from, int to, 
   }
 }
 
+// Keeps the earliest moment a positive vertex can grow the unlabeled top b over edge e: only
+// that one is queued, and when it turns out stale (its positive end left the forest) b's edges
+// are scanned again (push_edge_events_towards). Later candidates can therefore be dropped —
+// half of all queued events otherwise, each a heap operation.
+void BlossomMatching::consider_grow(int b, int e, int64_t time) {
+  if (time >= top_[b].grow_time) return;
+  top_[b].grow_time = time;
+  top_[b].grow_edge = e;
+  push_event(time, kGrowEvent, b);
+}
+
 // Queues the moment each edge from the (now positive) blossom b becomes tight.
 void BlossomMatching::scan_plus(int b) {
   leaves(b, scratch_);
+  const int self = top_of(b);  // b itself, or the new blossom whose child b became
   for (int u : scratch_) {
+    const int64_t yu = dual_in(u, self);
     for (int k = adj_start_[u]; k < adj_start_[u + 1]; ++k) {
       const int e = adj_edge_[k], v = other(e, u);
       const int bv = top_of(v);
-      if (bv == top_of(u) || label_[bv] == kMinus) continue;
-      const int64_t s = slack(e);
-      if (label_[bv] == kPlus && (s & 1))
+      if (bv == self || top_[bv].label == kMinus) continue;
+      const int64_t s = yu + dual_in(v, bv) - w2_[e];
+      if (top_[bv].label == kNone) {
+        consider_grow(bv, e, now_ + s);
+        continue;
+      }
+      if (s & 1)
         throw std::logic_error("blossom matching: odd slack between two positive vertices");
-      push_event(now_ + (label_[bv] == kPlus ? s / 2 : s), kEdgeEvent, e);
+      push_event(now_ + s / 2, kEdgeEvent, e);
     }
   }
 }
 
-// b just left the tree: edges from positive vertices towards it now lose slack.
+// The unlabeled top b (just out of a tree, or its queued grow edge stale): edges from positive
+// vertices towards it lose slack; the earliest becomes its grow event.
 void BlossomMatching::push_edge_events_towards(int b) {
-  std::vector<int> vs;
-  leaves(b, vs);
-  for (int v : vs)
+  leaves(b, scratch_);
+  int64_t earliest = kNever;
+  int best = -1;
+  for (int v : scratch_) {
+    const int64_t yv = dual_in(v, b);
     for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k) {
-      const int e = adj_edge_[k];
-      if (label_[top_of(other(e, v))] != kPlus) continue;
-      push_event(now_ + slack(e), kEdgeEvent, e);
+      const int e = adj_edge_[k], u = other(e, v), bu = top_of(u);
+      if (top_[bu].label != kPlus) continue;
+      const int64_t time = now_ + yv + dual_in(u, bu) - w2_[e];
+      if (time < earliest) earliest = time, best = e;
     }
+  }
+  if (best >= 0) consider_grow(b, best, earliest);
 }
 
 int BlossomMatching::tree_parent(int b) { return label_edge_[b] < 0 ? -1 : top_of(label_from_[b]); }
@@ -126,32 +159,23 @@ int BlossomMatching::new_blossom_id() {
     free_ids_.pop_back();
     return id;
   }
-  const int id = static_cast<int>(parent_.size());
-  parent_.push_back(-1);
+  const int id = static_cast<int>(link_.size());
+  link_.emplace_back();
+  top_.emplace_back();
   base_.push_back(-1);
-  children_.emplace_back();
-  cyc_edge_.emplace_back();
-  cyc_from_.emplace_back();
-  cyc_to_.emplace_back();
+  cycle_.emplace_back();
   z_.push_back(0);
-  off_.push_back(0);
   size_.push_back(0);
-  jump_.push_back(-1);
-  jump_gen_.push_back(0);
-  gen_.push_back(0);
-  label_.push_back(kNone);
   label_edge_.push_back(-1);
   label_from_.push_back(-1);
   label_to_.push_back(-1);
-  label_time_.push_back(0);
-  tree_.push_back(-1);
   mark_.push_back(0);
   return id;
 }
 
 void BlossomMatching::grow(int u, int v, int e) {
   const int bv = top_of(v);
-  const int tree = tree_[top_of(u)];
+  const int tree = top_[top_of(u)].tree;
   set_label(bv, kMinus, e, u, v, tree);
   const int base = base_[bv];
   const int w = other(mate_[base], base);
@@ -182,8 +206,8 @@ void BlossomMatching::make_blossom(int u, int v, int e) {
   for (int x = bv; x != lca; x = tree_parent(x)) path_v.push_back(x);
 
   const int b = new_blossom_id();
-  std::vector<int>& kids = children_[b];
-  std::vector<int>&cedge = cyc_edge_[b], &cfrom = cyc_from_[b], &cto = cyc_to_[b];
+  std::vector<int>& kids = cycle(b).children;
+  std::vector<int>&cedge = cycle(b).edge, &cfrom = cycle(b).from, &cto = cycle(b).to;
   kids.assign(1, lca);
   for (auto it = path_u.rbegin(); it != path_u.rend(); ++it) {
     kids.push_back(*it);
@@ -206,31 +230,31 @@ void BlossomMatching::make_blossom(int u, int v, int e) {
   int host = lca;
   for (int k : kids) {
     bring_up_to_date(k);
-    if (label_[k] == kMinus) were_minus.push_back(k);
+    if (top_[k].label == kMinus) were_minus.push_back(k);
     if (size_[k] > size_[host]) host = k;
   }
-  off_[b] = off_[host];
+  top_[b].off = top_[host].off;
   size_[b] = 0;
-  std::vector<int> vs;
   for (int k : kids) {
     size_[b] += size_[k];
     if (k != host) {
-      leaves(k, vs);
-      for (int x : vs) y_[x] += off_[k] - off_[b];
+      leaves(k, scratch_);
+      for (int x : scratch_) y_[x] += top_[k].off - top_[b].off;
     }
-    label_[k] = kNone;
-    parent_[k] = b;
+    top_[k].label = kNone;
+    link_[k].parent = b;
   }
   base_[b] = base_[lca];
   z_[b] = 0;
-  parent_[b] = -1;
-  label_[b] = kPlus;
-  label_time_[b] = now_;
+  link_[b].parent = -1;
+  top_[b].label = kPlus;
+  top_[b].label_time = now_;
+  top_[b].grow_time = kNever;
   label_edge_[b] = label_edge_[lca];
   label_from_[b] = label_from_[lca];
   label_to_[b] = label_to_[lca];
-  tree_[b] = tree_[lca];
-  tree_tops_[tree_[b]].push_back(b);
+  top_[b].tree = top_[lca].tree;
+  tree_tops_[top_[b].tree].push_back(b);
   for (int k : were_minus) scan_plus(k);
 }
 
@@ -240,26 +264,27 @@ void BlossomMatching::expand(int b) {
   bring_up_to_date(b);
   if (z_[b] != 0) throw std::logic_error("blossom matching: expanding a blossom with z != 0");
   int c = label_to_[b];
-  while (parent_[c] != b) c = parent_[c];
-  const std::vector<int> kids = std::move(children_[b]);
-  const std::vector<int> cedge = std::move(cyc_edge_[b]), cfrom = std::move(cyc_from_[b]),
-                         cto = std::move(cyc_to_[b]);
+  while (link_[c].parent != b) c = link_[c].parent;
+  // Copies: b's id (and cycle) may be reused while the children are labeled.
+  const std::vector<int> kids = cycle(b).children, cedge = cycle(b).edge, cfrom = cycle(b).from,
+                         cto = cycle(b).to;
   const int len = static_cast<int>(kids.size());
   const int j = static_cast<int>(std::find(kids.begin(), kids.end(), c) - kids.begin());
   for (int k : kids) {
-    parent_[k] = -1;
-    label_[k] = kNone;
-    label_time_[k] = now_;
-    off_[k] = off_[b];
+    link_[k].parent = -1;
+    top_[k].label = kNone;
+    top_[k].grow_time = kNever;
+    top_[k].label_time = now_;
+    top_[k].off = top_[b].off;
   }
   const int in_edge = label_edge_[b], in_from = label_from_[b], in_to = label_to_[b];
-  const int tree = tree_[b];
-  children_[b].clear();
-  cyc_edge_[b].clear();
-  cyc_from_[b].clear();
-  cyc_to_[b].clear();
-  label_[b] = kNone;
-  ++gen_[b];  // jumps to b are no longer trusted
+  const int tree = top_[b].tree;
+  cycle(b).children.clear();
+  cycle(b).edge.clear();
+  cycle(b).from.clear();
+  cycle(b).to.clear();
+  top_[b].label = kNone;
+  ++link_[b].gen;  // jumps to b are no longer trusted
   free_ids_.push_back(b);
 
   std::vector<char> on_path(len, 0);
@@ -286,16 +311,17 @@ void BlossomMatching::rotate_to(int b, int x) {
   if (b == x || base_[b] == x) return;
   // Bottom-up along x's blossoms inside b: each makes the child holding x its base child.
   std::vector<int> path;
-  for (int c = x; c != b; c = parent_[c]) path.push_back(c);
+  for (int c = x; c != b; c = link_[c].parent) path.push_back(c);
   path.push_back(b);
   for (size_t level = 1; level < path.size(); ++level) {
     const int blossom = path[level], c = path[level - 1];
     if (base_[blossom] == x) continue;
-    std::vector<int>& kids = children_[blossom];
+    Cycle& cyc = cycle(blossom);
+    std::vector<int>& kids = cyc.children;
     const int len = static_cast<int>(kids.size());
     const int j = static_cast<int>(std::find(kids.begin(), kids.end(), c) - kids.begin());
     auto match = [&](int k) {
-      const int e = cyc_edge_[blossom][k], from = cyc_from_[blossom][k], to = cyc_to_[blossom][k];
+      const int e = cyc.edge[k], from = cyc.from[k], to = cyc.to[k];
       rotate_to(kids[k], from);
       rotate_to(kids[(k + 1) % len], to);
       mate_[from] = mate_[to] = e;
@@ -306,11 +332,9 @@ void BlossomMatching::rotate_to(int b, int x) {
       for (int k = j + 1; k < len; k += 2) match(k);
     }
     std::rotate(kids.begin(), kids.begin() + j, kids.end());
-    std::rotate(cyc_edge_[blossom].begin(), cyc_edge_[blossom].begin() + j,
-                cyc_edge_[blossom].end());
-    std::rotate(cyc_from_[blossom].begin(), cyc_from_[blossom].begin() + j,
-                cyc_from_[blossom].end());
-    std::rotate(cyc_to_[blossom].begin(), cyc_to_[blossom].begin() + j, cyc_to_[blossom].end());
+    std::rotate(cyc.edge.begin(), cyc.edge.begin() + j, cyc.edge.end());
+    std::rotate(cyc.from.begin(), cyc.from.begin() + j, cyc.from.end());
+    std::rotate(cyc.to.begin(), cyc.to.begin() + j, cyc.to.end());
     base_[blossom] = x;
   }
 }
@@ -335,7 +359,7 @@ void BlossomMatching::flip_to_root(int x, std::vector<int>& pairs) {
 // Positive u and v of two different trees joined by a tight edge: an augmenting path from one
 // root to the other. Both trees are then taken apart.
 void BlossomMatching::augment(int u, int v, int e) {
-  const int tree_u = tree_[top_of(u)], tree_v = tree_[top_of(v)];
+  const int tree_u = top_[top_of(u)].tree, tree_v = top_[top_of(v)].tree;
   std::vector<int> pairs{u, v, e};  // (x, y, edge) to match once all rotations are done
   flip_to_root(u, pairs);
   flip_to_root(v, pairs);
@@ -353,11 +377,11 @@ void BlossomMatching::augment(int u, int v, int e) {
 // vertices now lose slack, so they are queued.
 void BlossomMatching::dissolve_tree(int tree, std::vector<int>& were_minus) {
   for (int b : tree_tops_[tree])
-    if (parent_[b] < 0 && label_[b] != kNone && tree_[b] == tree) {
+    if (link_[b].parent < 0 && top_[b].label != kNone && top_[b].tree == tree) {
       bring_up_to_date(b);
-      if (label_[b] == kMinus) were_minus.push_back(b);
-      label_[b] = kNone;
-      tree_[b] = -1;
+      if (top_[b].label == kMinus) were_minus.push_back(b);
+      top_[b].label = kNone;
+      top_[b].tree = -1;
     }
   tree_tops_[tree].clear();
 }
@@ -367,12 +391,10 @@ void BlossomMatching::dissolve_tree(int tree, std::vector<int>& were_minus) {
 // so no perfect matching exists.
 bool BlossomMatching::grow_forest() {
   now_ = 0;
-  int64_t free_vertices = 0;
-  for (int v = 0; v < n_; ++v)
-    if (mate_[v] < 0) {
-      ++free_vertices;
-      set_label(v, kPlus, -1, -1, -1, v);
-    }
+  int64_t free_vertices = std::count(mate_.begin(), mate_.end(), -1);
+  tree_tops_.assign(free_vertices, {});
+  for (int v = 0, tree = 0; v < n_; ++v)
+    if (mate_[v] < 0) set_label(v, kPlus, -1, -1, -1, tree++);
   free_after_start_ = free_vertices;
   while (free_vertices > 0 && !heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
@@ -382,8 +404,8 @@ bool BlossomMatching::grow_forest() {
     now_ = ev.time;
     if (ev.kind == kExpandEvent) {
       const int b = ev.id;
-      if (parent_[b] != -1 || children_[b].empty() || label_[b] != kMinus) continue;
-      const int64_t z = z_[b] - 2 * (now_ - label_time_[b]);
+      if (link_[b].parent != -1 || cycle(b).children.empty() || top_[b].label != kMinus) continue;
+      const int64_t z = z_[b] - 2 * (now_ - top_[b].label_time);
       if (z < 0) throw std::logic_error("blossom matching: negative blossom dual");
       if (z > 0) {
         push_event(now_ + z / 2, kExpandEvent, b);
@@ -392,27 +414,45 @@ bool BlossomMatching::grow_forest() {
       }
       continue;
     }
+    if (ev.kind == kGrowEvent) {
+      const int b = ev.id;
+      if (link_[b].parent >= 0 || top_[b].label != kNone || top_[b].grow_time != ev.time) continue;
+      top_[b].grow_time = kNever;
+      const int e = top_[b].grow_edge;
+      const bool a_inside = top_of(end_a_[e]) == b;
+      const int u = a_inside ? end_b_[e] : end_a_[e], v = a_inside ? end_a_[e] : end_b_[e];
+      const int64_t s = slack(e);
+      if (s < 0) throw std::logic_error("blossom matching: an edge lost dual feasibility");
+      if (top_[top_of(u)].label == kPlus && s == 0) {
+        grow(u, v, e);
+      } else {
+        push_edge_events_towards(b);  // its positive end left the forest meanwhile
+      }
+      continue;
+    }
     const int e = ev.id;
     int u = end_a_[e], v = end_b_[e];
     int bu = top_of(u), bv = top_of(v);
     if (bu == bv) continue;
-    if (label_[bu] != kPlus) {
+    if (top_[bu].label != kPlus) {
       std::swap(u, v);
       std::swap(bu, bv);
     }
-    const Label lv = label_[bv];
-    if (label_[bu] != kPlus || lv == kMinus) continue;
+    const Label lv = top_[bv].label;
+    if (top_[bu].label != kPlus || lv == kMinus) continue;
     const int64_t s = slack(e);
     if (s < 0) throw std::logic_error("blossom matching: an edge lost dual feasibility");
-    if (s > 0) {
-      if (lv == kPlus && (s & 1))
-        throw std::logic_error("blossom matching: odd slack between two positive vertices");
-      push_event(now_ + (lv == kPlus ? s / 2 : s), kEdgeEvent, e);
+    if (lv == kNone) {  // its other end's tree was taken apart
+      consider_grow(bv, e, now_ + s);
       continue;
     }
-    if (lv == kNone) {
-      grow(u, v, e);
-    } else if (tree_[bu] == tree_[bv]) {
+    if (s > 0) {
+      if (s & 1)
+        throw std::logic_error("blossom matching: odd slack between two positive vertices");
+      push_event(now_ + s / 2, kEdgeEvent, e);
+      continue;
+    }
+    if (top_[bu].tree == top_[bv].tree) {
       make_blossom(u, v, e);
     } else {
       augment(u, v, e);

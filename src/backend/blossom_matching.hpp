@@ -8,9 +8,10 @@
 // and a matching on tight edges (equality). Every free vertex roots an alternating tree, and
 // all trees grow together with one dual change δ (positive vertices −δ, negative +δ, positive
 // blossoms' z +2δ, negative −2δ). δ is never applied vertex by vertex: the moments at which an
-// edge becomes tight or a negative blossom's z reaches 0 sit in a priority queue, and a
-// vertex's dual is its stored value plus its top blossom's offset plus the change since that
-// blossom was labeled (lazy duals). A tight edge between two trees augments (both trees are
+// edge between positive blossoms becomes tight, an unlabeled blossom can first be grown into
+// a tree (one event per blossom, its earliest edge) or a negative blossom's z reaches 0 sit in
+// a priority queue, and a vertex's dual is its stored value plus its top blossom's offset plus
+// the change since that blossom was labeled (lazy duals). A tight edge between two trees augments (both trees are
 // taken apart), inside one tree it forms a blossom; blossoms outlive the trees. A new blossom
 // keeps its largest child's vertices as they are and rebases only the others, so nested
 // blossoms cost their smaller parts; tops are found through path-compressed jumps.
@@ -30,6 +31,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -64,21 +66,23 @@ class BlossomMatching {
   enum Label : int8_t { kNone, kPlus, kMinus };
   struct Event {
     int64_t time;
-    int kind;  // 0: edge, 1: expand a negative blossom
+    int kind;  // kEdgeEvent, kExpandEvent or kGrowEvent (blossom_matching.cpp)
     int id;
     bool operator>(const Event& o) const { return time > o.time; }
   };
 
   int other(int e, int v) const { return end_a_[e] ^ end_b_[e] ^ v; }
   bool nontrivial(int b) const { return b >= n_; }
-  int64_t dual(int v);  // current y of a vertex (doubled units)
+  int64_t dual(int v);                    // current y of a vertex (doubled units)
+  int64_t dual_in(int v, int top) const;  // the same, its top blossom known
   int64_t slack(int e);
-  void leaves(int b, std::vector<int>& out) const;
+  void leaves(int b, std::vector<int>& out);
   void bring_up_to_date(int b);
   int top_of(int v);
   void set_label(int b, Label label, int edge, int from, int to, int tree);
   void scan_plus(int b);
   void push_edge_events_towards(int b);
+  void consider_grow(int b, int e, int64_t time);
   void push_event(int64_t time, int kind, int id);
   bool grow_forest();
   void grow(int u, int v, int e);
@@ -97,29 +101,50 @@ class BlossomMatching {
   std::vector<int> end_a_, end_b_;
   std::vector<int64_t> w2_;  // doubled weights
   std::vector<int> adj_start_, adj_edge_;
-  // Doubled dual of vertex v: y_[v] + off_[top] + the change since its top was labeled.
+  // Doubled dual of vertex v: y_[v] + top_[t].off for its top blossom t + the change since t
+  // was labeled.
   std::vector<int64_t> y_;
   std::vector<int> mate_;  // matched edge per vertex or -1
   std::vector<char> start_match_;
 
-  // Blossom forest: ids < n are vertices, ids ≥ n blossoms.
-  std::vector<int> parent_, base_;
-  std::vector<int> jump_, jump_gen_, gen_, path_;  // see top_of
-  std::vector<std::vector<int>> children_, cyc_edge_, cyc_from_, cyc_to_;
-  std::vector<int64_t> z_, off_;
+  // Blossom forest: ids < n are vertices, ids ≥ n blossoms. Fields read together on the hot
+  // path (top_of, dual) share a struct, so that one lookup touches one cache line.
+  struct Link {
+    int parent = -1;
+    int jump = -1, jump_gen = 0;  // see top_of
+    int gen = 0;                  // bumped when the blossom is expanded (its id freed)
+  };
+  std::vector<Link> link_;
+  std::vector<int> base_, path_;
+  // The odd cycle of blossom b ≥ n lives at cycle_[b − n] (ids are reused, and so are the
+  // vectors' buffers): children in cycle order from the base child; edge[k] joins children k
+  // (at vertex from[k]) and k + 1 (at to[k]), the last one closing the cycle.
+  struct Cycle {
+    std::vector<int> children, edge, from, to;
+  };
+  std::vector<Cycle> cycle_;
+  Cycle& cycle(int b) { return cycle_[b - n_]; }
+  std::vector<int64_t> z_;
   std::vector<int> size_;  // vertices in a blossom
   std::vector<int> free_ids_;
-  // The forest, per top blossom; a tree is named by its root vertex.
-  std::vector<Label> label_;
-  std::vector<int> tree_;
+  // The forest, per top blossom; trees are numbered in the order of their free root vertices.
+  // `off` is kept for every id (children keep theirs inside a blossom); the rest only for tops.
+  struct Top {
+    int64_t off = 0;         // added to the duals of all vertices below
+    int64_t label_time = 0;  // now_ when labeled; dual changes since are applied lazily
+    Label label = kNone;
+    int tree = -1;
+    int grow_edge = -1;  // unlabeled tops: the edge of their queued grow event, due at
+    int64_t grow_time = std::numeric_limits<int64_t>::max();  // (see consider_grow)
+  };
+  std::vector<Top> top_;
   std::vector<std::vector<int>> tree_tops_;  // per tree, its tops (stale entries skipped)
   std::vector<int> label_edge_, label_from_, label_to_;
-  std::vector<int64_t> label_time_;
   std::vector<int> mark_;
   int mark_stamp_ = 0;
   int64_t now_ = 0;
   std::vector<Event> heap_;
-  std::vector<int> scratch_;
+  std::vector<int> scratch_, leaf_stack_;  // buffers of leaves() and its callers
 
   Status status_ = Status::NotRun;
   int64_t free_after_start_ = 0;

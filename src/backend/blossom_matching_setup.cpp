@@ -60,26 +60,29 @@ BlossomMatching& BlossomMatching::initial_matching(std::span<const char> matched
 
 void BlossomMatching::start() {
   const int m = static_cast<int>(end_a_.size());
-  parent_.assign(n_, -1);
+  // A blossom has at least three children, so at most (n − 1) / 2 blossoms live at once: ids
+  // stay below 1.5 n, and reserving that keeps the per-id arrays from moving.
+  const size_t most_ids = n_ + n_ / 2 + 1;
+  link_.reserve(most_ids);
+  top_.reserve(most_ids);
+  base_.reserve(most_ids);
+  cycle_.reserve(most_ids - n_);
+  z_.reserve(most_ids);
+  size_.reserve(most_ids);
+  label_edge_.reserve(most_ids);
+  label_from_.reserve(most_ids);
+  label_to_.reserve(most_ids);
+  mark_.reserve(most_ids);
+  link_.assign(n_, Link{});
+  top_.assign(n_, Top{});
   base_.resize(n_);
   for (int v = 0; v < n_; ++v) base_[v] = v;
-  jump_.assign(n_, -1);
-  jump_gen_.assign(n_, 0);
-  gen_.assign(n_, 0);
-  children_.assign(n_, {});
-  cyc_edge_.assign(n_, {});
-  cyc_from_.assign(n_, {});
-  cyc_to_.assign(n_, {});
+  cycle_.clear();
   z_.assign(n_, 0);
-  off_.assign(n_, 0);
   size_.assign(n_, 1);
-  label_.assign(n_, kNone);
   label_edge_.assign(n_, -1);
   label_from_.assign(n_, -1);
   label_to_.assign(n_, -1);
-  label_time_.assign(n_, 0);
-  tree_.assign(n_, -1);
-  tree_tops_.assign(n_, {});
   mark_.assign(n_, 0);
   free_ids_.clear();
 
@@ -137,27 +140,29 @@ BlossomMatching::Status BlossomMatching::run() {
 // vertices matched outside it are counted by subtree sums (+1 at each end of a matched edge,
 // −2 at their lowest common blossom).
 bool BlossomMatching::certificate_holds() {
-  const int ids = static_cast<int>(parent_.size());
+  const int ids = static_cast<int>(link_.size());
   for (int v = 0; v < n_; ++v) {
     const int e = mate_[v];
     if (e < 0 || (end_a_[e] != v && end_b_[e] != v) || mate_[other(e, v)] != e) return false;
   }
   // Preorder of the blossom forest (parents first), depth and z summed from the top down.
-  std::vector<int> order, depth(ids, 0);
+  std::vector<int> order, depth(ids, 0), stack;
+  order.reserve(ids);
   std::vector<int64_t> z_down(ids, 0);
   for (int b = 0; b < ids; ++b) {
-    const bool live = b < n_ || !children_[b].empty();
-    if (!live || parent_[b] >= 0) continue;
-    std::vector<int> stack{b};
+    const bool live = b < n_ || !cycle(b).children.empty();
+    if (!live || link_[b].parent >= 0) continue;
+    stack.assign(1, b);
     while (!stack.empty()) {
       const int x = stack.back();
       stack.pop_back();
       order.push_back(x);
-      const int p = parent_[x];
+      const int p = link_[x].parent;
       depth[x] = p >= 0 ? depth[p] + 1 : 0;
       if (nontrivial(x) && z_[x] < 0) return false;
       z_down[x] = (nontrivial(x) ? z_[x] : 0) + (p >= 0 ? z_down[p] : 0);
-      if (nontrivial(x)) stack.insert(stack.end(), children_[x].begin(), children_[x].end());
+      if (nontrivial(x))
+        stack.insert(stack.end(), cycle(x).children.begin(), cycle(x).children.end());
     }
   }
   int levels = 1, deepest = 0;
@@ -165,7 +170,7 @@ bool BlossomMatching::certificate_holds() {
   while ((1 << levels) <= deepest) ++levels;
   std::vector<std::vector<int>> up(levels, std::vector<int>(ids, -1));
   for (int x : order) {
-    up[0][x] = parent_[x];
+    up[0][x] = link_[x].parent;
     for (int k = 1; k < levels; ++k) up[k][x] = up[k - 1][x] < 0 ? -1 : up[k - 1][up[k - 1][x]];
   }
   auto lowest_common = [&](int a, int b) {
@@ -177,11 +182,18 @@ bool BlossomMatching::certificate_holds() {
       if (up[k][a] != up[k][b]) a = up[k][a], b = up[k][b];
     return up[0][a];  // -1: different top blossoms
   };
+  // Most edges join two top blossoms, where no z applies: each vertex's top and dual once.
+  std::vector<int> top(n_);
+  std::vector<int64_t> y(n_);
+  for (int v = 0; v < n_; ++v) {
+    top[v] = top_of(v);
+    y[v] = dual(v);
+  }
   std::vector<int64_t> outside(ids, 0);
   for (int e = 0; e < static_cast<int>(end_a_.size()); ++e) {
     const int u = end_a_[e], v = end_b_[e];
-    const int common = lowest_common(u, v);
-    const int64_t s = dual(u) + dual(v) + (common >= 0 ? z_down[common] : 0) - w2_[e];
+    const int common = top[u] == top[v] ? lowest_common(u, v) : -1;
+    const int64_t s = y[u] + y[v] + (common >= 0 ? z_down[common] : 0) - w2_[e];
     if (s < 0 || (mate_[u] == e && s != 0)) return false;
     if (mate_[u] == e) {
       ++outside[u];
@@ -191,7 +203,7 @@ bool BlossomMatching::certificate_holds() {
   }
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     if (nontrivial(*it) && z_[*it] > 0 && outside[*it] > 1) return false;
-    if (parent_[*it] >= 0) outside[parent_[*it]] += outside[*it];
+    if (link_[*it].parent >= 0) outside[link_[*it].parent] += outside[*it];
   }
   return true;
 }
