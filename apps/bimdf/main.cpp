@@ -4,8 +4,6 @@
 //   -o FILE   write the result JSON (or, for convert, the problem) to FILE, atomically
 //   exit 0 success, 1 infeasible/unbounded (or a flow that violates the problem),
 //        2 invalid input or usage, 3 internal error.
-#include <malloc.h>
-
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <cstdio>
@@ -17,6 +15,7 @@
 #include "bimdf/io.hpp"
 #include "bimdf/summary.hpp"
 #include "bimdf/version.hpp"
+#include "memory_setup.hpp"
 #include "output.hpp"
 #include "quantize_command.hpp"
 #include "remesh_command.hpp"
@@ -205,14 +204,7 @@ int run_generate(const std::string& family, int64_t size, uint64_t seed, const s
 }  // namespace
 
 int main(int argc, char** argv) {
-  // The solver allocates and frees the same large arrays round after round (min-cost flow and
-  // matching networks of up to a few hundred MB). By default glibc serves each from a fresh
-  // mmap and returns it on free, so every round pays the page faults again (a fifth of the
-  // approximation's time on the largest shared instance). Keeping freed memory in the heap
-  // avoids that at no cost in peak memory; a process-wide setting, so the program sets it, not
-  // the library.
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's maximum
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  configure_process_memory(argv);
   CLI::App app{"bimdf: exact minimum-deviation flows in bidirected graphs (Bi-MDF)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("bimdf ") + BIMDF_VERSION);
