@@ -136,9 +136,9 @@ BlossomMatching::Status BlossomMatching::run() {
 
 // Perfect matching + feasible duals + tight matched edges + full blossoms where z > 0, in
 // O((n + m) log depth) however deeply blossoms nest: the z of the blossoms holding both ends of
-// an edge is a prefix sum at the ends' lowest common blossom (binary lifting), and a blossom's
-// vertices matched outside it are counted by subtree sums (+1 at each end of a matched edge,
-// −2 at their lowest common blossom).
+// an edge is a prefix sum at the ends' lowest common blossom (a short walk up, else binary
+// lifting), and a blossom's vertices matched outside it are counted by subtree sums (+1 at each
+// end of a matched edge, −2 at their lowest common blossom).
 bool BlossomMatching::certificate_holds() {
   const int ids = static_cast<int>(link_.size());
   for (int v = 0; v < n_; ++v) {
@@ -165,15 +165,30 @@ bool BlossomMatching::certificate_holds() {
         stack.insert(stack.end(), cycle(x).children.begin(), cycle(x).children.end());
     }
   }
-  int levels = 1, deepest = 0;
-  for (int x : order) deepest = std::max(deepest, depth[x]);
-  while ((1 << levels) <= deepest) ++levels;
-  std::vector<std::vector<int>> up(levels, std::vector<int>(ids, -1));
-  for (int x : order) {
-    up[0][x] = link_[x].parent;
-    for (int k = 1; k < levels; ++k) up[k][x] = up[k - 1][x] < 0 ? -1 : up[k - 1][up[k - 1][x]];
-  }
+  // Lowest common blossom of two ids: nesting is shallow in practice, so walk up first; a
+  // binary-lifting table (built once, when a walk first gets long) bounds deep chains.
+  int levels = 0;
+  std::vector<std::vector<int>> up;
+  auto build_lifting = [&] {
+    int deepest = 0;
+    for (int x : order) deepest = std::max(deepest, depth[x]);
+    levels = 1;
+    while ((1 << levels) <= deepest) ++levels;
+    up.assign(levels, std::vector<int>(ids, -1));
+    for (int x : order) {
+      up[0][x] = link_[x].parent;
+      for (int k = 1; k < levels; ++k) up[k][x] = up[k - 1][x] < 0 ? -1 : up[k - 1][up[k - 1][x]];
+    }
+  };
   auto lowest_common = [&](int a, int b) {
+    for (int steps = 0; steps < 16; ++steps) {
+      if (a == b) return a;
+      const int da = depth[a], db = depth[b];
+      if (da >= db) a = link_[a].parent;
+      if (db >= da) b = link_[b].parent;
+      if (a < 0 || b < 0) return -1;  // different top blossoms
+    }
+    if (up.empty()) build_lifting();
     if (depth[a] < depth[b]) std::swap(a, b);
     for (int k = levels - 1; k >= 0; --k)
       if (up[k][a] >= 0 && depth[up[k][a]] >= depth[b]) a = up[k][a];

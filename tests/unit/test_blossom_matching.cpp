@@ -154,6 +154,39 @@ TEST(BlossomMatching, EqualsLemonOnLargerGraphs) {
   EXPECT_LT(infeasible, 60);
 }
 
+// A tower of k nested blossoms: from the root 0 an alternating path 0 − 1 = 2 − 3 = 4 ... (the
+// "=" pairs start matched, every edge tight), and a closing edge from 2i back to 0 that becomes
+// tight at dual change i, so level i closes around level i − 1. The last free vertex L hangs
+// off 2k and meets the tower only after it is complete: the augmentation rotates through all k
+// levels, and the certificate must sum z along chains deeper than its short walk (16 levels).
+// Every perfect matching uses (2k, L); the rest can weigh 0, so the optimum is w(2k, L).
+TEST(BlossomMatching, DeeplyNestedBlossoms) {
+  for (int k : {3, 20, 300}) {
+    Graph g;
+    const int last = 2 * k + 1;
+    g.n = last + 1;
+    std::vector<char> start;
+    auto add = [&](int a, int b, int64_t w, bool matched) {
+      g.a.push_back(a);
+      g.b.push_back(b);
+      g.w.push_back(w);
+      start.push_back(matched);
+    };
+    add(0, 1, 0, false);
+    for (int i = 1; i <= k; ++i) {
+      if (i > 1) add(2 * i - 2, 2 * i - 1, 0, false);
+      add(2 * i - 1, 2 * i, 0, true);
+      add(2 * i, 0, -i, false);
+    }
+    add(2 * k, last, -(k + 1), false);
+    BlossomMatching solver(g.n, g.a, g.b, g.w);
+    solver.initial_duals(std::vector<int64_t>(g.n, 0)).initial_matching(start);
+    EXPECT_EQ(solve(g, solver), -(k + 1)) << "k = " << k;
+    EXPECT_EQ(solver.free_after_start(), 2);
+    if (k <= 3) EXPECT_EQ(brute_force(g), -(k + 1));
+  }
+}
+
 TEST(BlossomMatching, ReportsGraphsWithoutPerfectMatching) {
   // Two triangles: six vertices, every one with edges, but each triangle is odd.
   const std::vector<int> a{0, 1, 2, 3, 4, 5}, b{1, 2, 0, 4, 5, 3};
