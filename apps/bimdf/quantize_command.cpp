@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "bimdf/io.hpp"
+#include "solve_command.hpp"
 
 namespace bimdf::cli {
 namespace {
@@ -99,11 +100,10 @@ void add_quantize_options(CLI::App* cmd, QuantizeCommandOptions& o) {
   cmd->add_option("--threads", o.quantize.threads, "Worker threads for independent components")
       ->default_val(1)
       ->check(CLI::Range(1, 256));
-  cmd->add_option("--matching", o.matching,
-                  "Perfect matching solver of the exact solves: lemon (the optimum the remesh "
-                  "results were measured with) or blossom (faster; may pick another optimum)")
-      ->default_val("lemon")
-      ->check(CLI::IsMember({"blossom", "lemon"}));
+  add_matching_option(cmd, o.quantize.matching,
+                      "Perfect matching solver of the exact solves: lemon (the optimum the "
+                      "remesh results were measured with) or blossom (faster; may pick another "
+                      "optimum)");
   cmd->add_option("--time-limit", o.quantize.time_limit,
                   "Seconds per solve; then the best quantization found (default: none)")
       ->check(CLI::PositiveNumber);
@@ -125,7 +125,6 @@ CLI::App* add_quantize_command(CLI::App& app, QuantizeCommandOptions& o) {
 quant::QuantizeOptions effective_quantize_options(const QuantizeCommandOptions& o) {
   quant::QuantizeOptions q = o.quantize;
   q.model.simple_targets = !o.half_targets;
-  q.matching = o.matching == "blossom" ? MatchingBackend::Blossom : MatchingBackend::Lemon;
   if (o.unalign_weights.size() == 2) {
     q.initial.unalign_weight = o.unalign_weights[0];
     q.resolve.unalign_weight = o.unalign_weights[1];

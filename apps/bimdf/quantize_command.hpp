@@ -17,7 +17,6 @@ struct QuantizeCommandOptions {
   bool half_targets = false;
   std::vector<double> unalign_weights;  // rounds 1 and 2; empty: the defaults
   bool verbose = false;
-  std::string matching = "lemon";
   quant::QuantizeOptions quantize;
   OutputOptions out;
 };

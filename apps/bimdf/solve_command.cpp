@@ -156,14 +156,23 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
                   "Seconds before refinement stops and returns the best flow as feasible")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-lower-bound", o.no_lower_bound, "Skip the LP-relaxation lower bound");
-  cmd->add_option("--matching", o.matching,
-                  "Perfect matching solver of the refinement: blossom (bimdf's own, "
-                  "warm-started) or lemon (LEMON's, from scratch; a cross-check)")
-      ->default_val("blossom")
-      ->check(CLI::IsMember({"blossom", "lemon"}));
+  add_matching_option(cmd, o.matching,
+                      "Perfect matching solver of the refinement: blossom (bimdf's own, "
+                      "warm-started) or lemon (LEMON's, from scratch; a cross-check)");
   cmd->add_flag("-v,--verbose", o.verbose, "Print sizes and the time of every stage");
   add_output_options(cmd, o.out);
   return cmd;
+}
+
+void add_matching_option(CLI::App* cmd, MatchingBackend& backend, const std::string& description) {
+  cmd->add_option_function<std::string>(
+         "--matching",
+         [&backend](const std::string& name) {
+           backend = name == "lemon" ? MatchingBackend::Lemon : MatchingBackend::Blossom;
+         },
+         description)
+      ->check(CLI::IsMember({"blossom", "lemon"}))
+      ->default_str(backend == MatchingBackend::Blossom ? "blossom" : "lemon");
 }
 
 int run_solve(const SolveCommandOptions& o) {
@@ -188,7 +197,7 @@ int run_solve(const SolveCommandOptions& o) {
     solver.collapse_chains(!o.no_simplify).threads(o.threads).lower_bound(!o.no_lower_bound);
     if (o.max_rounds > 0) solver.max_rounds(o.max_rounds);
     if (o.time_limit > 0) solver.time_limit(o.time_limit);
-    solver.matching(o.matching == "lemon" ? MatchingBackend::Lemon : MatchingBackend::Blossom);
+    solver.matching(o.matching);
     solver.run();
     s = solver.solution();
   }

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "bimdf/solve.hpp"
 #include "output.hpp"
 
 namespace bimdf::cli {
@@ -19,13 +20,17 @@ struct SolveCommandOptions {
   int64_t max_rounds = 0;  // 0: unlimited
   double time_limit = 0;   // seconds; 0: unlimited
   bool no_lower_bound = false;
-  std::string matching = "blossom";
+  MatchingBackend matching = MatchingBackend::Blossom;
   bool verbose = false;
   OutputOptions out;
 };
 
 // Registers the subcommand's options on `app`; returns it.
 CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& options);
+
+// `--matching blossom|lemon` into `backend`, whose current value is the default (shared with
+// `quantize` and `remesh`).
+void add_matching_option(CLI::App* cmd, MatchingBackend& backend, const std::string& description);
 
 // Runs it; returns the exit code (0 solved, 1 infeasible). Throws InputError / UsageError.
 int run_solve(const SolveCommandOptions& options);

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "bimdf/quant/quantize.hpp"
+#include "core/stopwatch.hpp"
 #include "mesh/chart_parametrization.hpp"
 #include "mesh/chart_placement.hpp"
 #include "mesh/smoothing.hpp"
@@ -14,11 +15,9 @@
 namespace bimdf::quant {
 namespace {
 
-using Vec3 = std::array<double, 3>;
+using bimdf::detail::seconds_since;
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using Vec3 = std::array<double, 3>;
 
 void check_lengths(const Layout& layout, const std::vector<int64_t>& lengths) {
   if (lengths.size() != layout.subsides.size())

@@ -9,13 +9,12 @@
 
 #include "bimdf/flow.hpp"
 #include "bimdf/solve.hpp"
+#include "core/stopwatch.hpp"
 
 namespace bimdf::quant {
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
+using bimdf::detail::seconds_since;
 
 double surface_area(const TriangleMesh& m) {
   double area = 0;

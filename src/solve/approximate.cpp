@@ -9,6 +9,7 @@
 #include "backend/min_cost_flow.hpp"
 #include "bimdf/flow.hpp"
 #include "bimdf/solve.hpp"
+#include "core/stopwatch.hpp"
 #include "reduce/double_cover.hpp"
 #include "reduce/linearize.hpp"
 #include "reduce/phase_one.hpp"
@@ -16,19 +17,6 @@
 
 namespace bimdf::detail {
 namespace {
-
-class Stopwatch {
- public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 // The parity/cover combinations in the order they are tried: the requested one first, then the
 // other split of odd capacities, the other parity mode, and the symmetric cover last.

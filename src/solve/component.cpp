@@ -3,18 +3,11 @@
 #include <chrono>
 
 #include "bimdf/flow.hpp"
+#include "core/stopwatch.hpp"
 #include "solve/lower_bound.hpp"
 #include "solve/simplify.hpp"
 
 namespace bimdf::detail {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-}  // namespace
-
 ComponentResult solve_component(const Problem& component, const ComponentConfig& config) {
   ComponentResult r;
   auto t = std::chrono::steady_clock::now();

@@ -11,14 +11,11 @@
 
 #include "bimdf/flow.hpp"
 #include "bimdf/solve.hpp"
+#include "core/stopwatch.hpp"
 #include "reduce/components.hpp"
 
 namespace bimdf::detail {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 std::string describe_proof(const InfeasibilityProof& proof, const std::vector<int>& edge_original,
                            const std::vector<int>& node_original) {

@@ -11,6 +11,7 @@
 #include "backend/perfect_matching.hpp"
 #include "bimdf/flow.hpp"
 #include "core/deep_stack.hpp"
+#include "core/stopwatch.hpp"
 #include "reduce/bmatching.hpp"
 #include "reduce/linearize.hpp"
 #include "reduce/matching_gadgets.hpp"
@@ -20,10 +21,6 @@ namespace bimdf::detail {
 namespace {
 
 constexpr int kThroughflow = 2;  // M = U = 2, paper §3.9
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // The round's perfect matching by our blossom solver, warm-started from the pruning LP: its
 // integer costs (doubled) are the matching weights, so its duals carry over exactly (see
