@@ -46,9 +46,11 @@ class CliFixture : public ::testing::Test {
     return s.str();
   }
 
-  CliRun run(const std::string& args) const {
-    const std::string cmd =
-        std::string(BIMDF_CLI_PATH) + " " + args + " >" + path("stdout") + " 2>" + path("stderr");
+  // `environment`, if given, prefixes the command (e.g. "env -u GLIBC_TUNABLES").
+  CliRun run(const std::string& args, const std::string& environment = "") const {
+    const std::string cmd = (environment.empty() ? "" : environment + " ") +
+                            std::string(BIMDF_CLI_PATH) + " " + args + " >" + path("stdout") +
+                            " 2>" + path("stderr");
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")),
             slurp(path("stderr"))};

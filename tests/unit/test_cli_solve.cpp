@@ -57,6 +57,27 @@ TEST_F(CliSolve, ExactOnTheBundledExampleMatchesTheKnownOptimum) {
   EXPECT_EQ(json::parse(limited.out)["status"], "feasible");
 }
 
+// The program re-executes itself once to get huge pages (apps/bimdf/memory_setup.cpp): with the
+// tunable unset, switched off, on, or beside another tunable, it answers the same, and its
+// arguments survive the re-exec (a usage error still exits 2).
+TEST_F(CliSolve, HugePageReexecLeavesResultsUnchanged) {
+  json first;
+  for (const std::string env :
+       {"env -u GLIBC_TUNABLES", "env GLIBC_TUNABLES=glibc.malloc.hugetlb=0",
+        "env GLIBC_TUNABLES=glibc.malloc.perturb=0", "env GLIBC_TUNABLES=glibc.malloc.hugetlb=1"}) {
+    const CliRun r = run("solve --json " + kExample, env);
+    ASSERT_EQ(r.exit_code, 0) << env << ": " << r.err;
+    const json j = json::parse(r.out);
+    if (first.is_null()) first = j;
+    EXPECT_EQ(j["status"], "optimal") << env;
+    EXPECT_EQ(j["flow"], first["flow"]) << env;
+    EXPECT_EQ(j["objective"], first["objective"]) << env;
+  }
+  const CliRun bad = run("solve --matching foo " + kExample, "env -u GLIBC_TUNABLES");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--matching: foo not in {blossom,lemon}"), std::string::npos) << bad.err;
+}
+
 TEST_F(CliSolve, WritesSolutionFileThatCheckAccepts) {
   const std::string out = path("bunny.solution.json");
   const CliRun r = run("solve --approx -o " + out + " " + kExample);
