@@ -1,11 +1,24 @@
 #include "reduce/residual_pruning.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "backend/min_cost_flow.hpp"
 #include "reduce/double_cover.hpp"
 
 namespace bimdf::detail {
+
+int lp_scale_log2(const BiMcf& residual) {
+  // 2^(L+1)·(matching nodes)/(LP nodes + 1) ≤ 2^57 leaves the bound's other half for rounding.
+  double capacity = 0;
+  for (int64_t c : residual.capacity) capacity += static_cast<double>(c);
+  const double lp_nodes = 2.0 * residual.num_nodes() + 1;
+  const double matching_nodes = 4.0 * residual.num_nodes() + 2 * capacity + 1;
+  const int needed =
+      static_cast<int>(std::ceil(std::log2(std::max(1.0, matching_nodes / lp_nodes))));
+  return std::min(52, 56 - needed);
+}
 
 ResidualPruning prune_residual(const BiMcf& residual) {
   ResidualPruning out;
@@ -15,7 +28,7 @@ ResidualPruning prune_residual(const BiMcf& residual) {
       throw std::invalid_argument("residual pruning needs zero demands (node " + std::to_string(v) +
                                   ")");
   const DoubleCover dc = build_double_cover(residual, DoubleCoverKind::Relaxation);
-  const MinCostFlowResult lp = solve_min_cost_flow(dc.mcf, kLpScaleLog2);
+  const MinCostFlowResult lp = solve_min_cost_flow(dc.mcf, lp_scale_log2(residual));
   if (lp.status != MinCostFlowStatus::Optimal)
     throw std::logic_error(
         "residual pruning: the LP relaxation of a circulation problem with "

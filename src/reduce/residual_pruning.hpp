@@ -18,8 +18,8 @@
 // unit of residual capacity, an upper bound on the rounding error of any circulation.
 //
 // The LP also warm-starts the perfect matching that follows: its integer costs (scale S, with
-// 2^kLpScaleLog2 in place of 2^60 so that the matching solver has headroom) and, per node v,
-// d(v) = π(v⁻) − π(v⁺) from the double cover's potentials. A bidirected arc's two directed
+// 2^lp_scale_log2(residual) in place of 2^60 so that the matching solver has headroom) and, per
+// node v, d(v) = π(v⁻) − π(v⁺) from the double cover's potentials. A bidirected arc's two directed
 // copies have reduced costs summing to 2c + σ_a·d(a) + σ_b·d(b) (σ = +1 at a head, −1 at a
 // tail), so the b-matching duals σ·d/2 on the sides of each node make every arc the LP leaves
 // empty feasible and every arc it uses tight (matching_gadgets.hpp: gadget_duals).
@@ -52,7 +52,11 @@ struct ResidualPruning {
   std::vector<int64_t> lift(std::span<const int64_t> reduced_flow, int num_residual_arcs) const;
 };
 
-constexpr int kLpScaleLog2 = 52;
+// The LP's cost bound 2^L (min_cost_flow.hpp: max |cost|·S ≤ 2^L / (LP nodes + 1)): 52, or
+// less when the largest perfect matching this residual can lead to — 4 copies per node and at
+// most 2 gadget nodes per unit of arc capacity (bmatching.hpp, matching_gadgets.hpp) — would
+// push the doubled integer costs past the blossom solver's bound |w|·(nodes + 1) < 2^58.
+int lp_scale_log2(const BiMcf& residual);
 
 // `residual` must have zero demands and finite capacities. Throws std::logic_error if its LP
 // relaxation is not optimal (the zero circulation is feasible and capacities are finite).

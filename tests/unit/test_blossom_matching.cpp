@@ -19,6 +19,7 @@
 #include "random_problem.hpp"
 #include "reduce/bmatching.hpp"
 #include "reduce/matching_gadgets.hpp"
+#include "reduce/residual_pruning.hpp"
 
 namespace {
 
@@ -294,6 +295,32 @@ TEST(BlossomMatching, ExactSolverAgreesWithTheLemonBackend) {
   }
   EXPECT_GE(optimal, 30);
   EXPECT_GT(matchings, 20);  // the LP alone did not settle them
+}
+
+// A residual with ~70 unit arcs per node: the largest matching it can lead to has far more
+// nodes per LP node than usual, so the LP's cost scale must shrink (lp_scale_log2 < 52) for the
+// matching weights to stay within the blossom solver's bound — and they do, whatever the LP
+// keeps free.
+TEST(BlossomMatching, PruningLpScaleLeavesTheMatchingItsHeadroom) {
+  std::mt19937 rng(5);
+  bimdf::detail::BiMcf residual;
+  const int n = 3;
+  residual.demand.assign(n, 0);
+  for (int k = 0; k < 200; ++k) {
+    residual.end_a.push_back({static_cast<int>(rng() % n), rng() % 2 == 0});
+    residual.end_b.push_back({static_cast<int>(rng() % n), rng() % 2 == 0});
+    residual.capacity.push_back(1);
+    residual.cost.push_back(std::uniform_real_distribution<double>(-1, 1)(rng));
+  }
+  const int log2_limit = bimdf::detail::lp_scale_log2(residual);
+  EXPECT_LT(log2_limit, 52);
+  const bimdf::detail::ResidualPruning pruned = bimdf::detail::prune_residual(residual);
+  ASSERT_FALSE(pruned.proves_optimal);
+  const auto bm = bimdf::detail::reduce_to_bmatching(pruned.reduced, 2);
+  const auto mm = bimdf::detail::reduce_to_perfect_matching(bm.bmatching);
+  std::vector<int64_t> weight;
+  for (double w : mm.graph.weight) weight.push_back(2 * std::llround(w * pruned.cost_scale));
+  EXPECT_NO_THROW(BlossomMatching(mm.graph.num_nodes, mm.graph.end_a, mm.graph.end_b, weight));
 }
 
 }  // namespace
