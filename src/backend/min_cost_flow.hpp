@@ -36,7 +36,12 @@ struct MinCostFlowResult {
 // Solves `mcf` exactly (for the scaled integer costs). Deterministic. `limit_log2` < 60 gives
 // coarser integer costs (the bound above with 2^limit_log2), for callers that hand the costs
 // and potentials on to a solver with less headroom (refinement's perfect matching).
-MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2 = 60);
+MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2 = 60,
+                                      const std::vector<double>& start_potential = {});
+
+// The optimal potentials of `r` in units of cost (π / S): what a later, similar problem may
+// start from.
+std::vector<double> potentials_in_cost_units(const MinCostFlowResult& r);
 
 // The scale S described above, for the given costs and node count; `limit_log2` is 60 for the
 // min-cost flow and smaller for solvers that multiply their duals.

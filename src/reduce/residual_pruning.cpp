@@ -20,7 +20,7 @@ int lp_scale_log2(const BiMcf& residual) {
   return std::min(52, 56 - needed);
 }
 
-ResidualPruning prune_residual(const BiMcf& residual) {
+ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>& start_potential) {
   ResidualPruning out;
   const int n = residual.num_nodes(), m = residual.num_arcs();
   for (int v = 0; v < n; ++v)
@@ -28,11 +28,13 @@ ResidualPruning prune_residual(const BiMcf& residual) {
       throw std::invalid_argument("residual pruning needs zero demands (node " + std::to_string(v) +
                                   ")");
   const DoubleCover dc = build_double_cover(residual, DoubleCoverKind::Relaxation);
-  const MinCostFlowResult lp = solve_min_cost_flow(dc.mcf, lp_scale_log2(residual));
+  const MinCostFlowResult lp =
+      solve_min_cost_flow(dc.mcf, lp_scale_log2(residual), start_potential);
   if (lp.status != MinCostFlowStatus::Optimal)
     throw std::logic_error(
         "residual pruning: the LP relaxation of a circulation problem with "
         "finite capacities is not optimal");
+  out.potential = potentials_in_cost_units(lp);
 
   // 128-bit sums: each scaled cost and reduced cost is below 3·2^60 (min_cost_flow.hpp).
   __int128 lp_value = 0, margin = 0;

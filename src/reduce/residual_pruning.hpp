@@ -47,6 +47,9 @@ struct ResidualPruning {
   double cost_scale = 1;
   std::vector<int64_t> node_dual;
   std::vector<int64_t> twice_flow;
+  // The LP's optimal potentials per double-cover node (v⁺ = 2v, v⁻ = 2v + 1 of the residual),
+  // in units of cost: the next round's LP starts from them (min_cost_flow.hpp).
+  std::vector<double> potential;
 
   // A circulation of `reduced` as one of the residual (fixed arcs 0).
   std::vector<int64_t> lift(std::span<const int64_t> reduced_flow, int num_residual_arcs) const;
@@ -60,6 +63,9 @@ int lp_scale_log2(const BiMcf& residual);
 
 // `residual` must have zero demands and finite capacities. Throws std::logic_error if its LP
 // relaxation is not optimal (the zero circulation is feasible and capacities are finite).
-ResidualPruning prune_residual(const BiMcf& residual);
+// `start_potential`, when not empty, are potentials per double-cover node to warm-start the LP
+// from (a previous round's `potential`).
+ResidualPruning prune_residual(const BiMcf& residual,
+                               const std::vector<double>& start_potential = {});
 
 }  // namespace bimdf::detail

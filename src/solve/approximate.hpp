@@ -34,6 +34,9 @@ struct ApproximateOutcome {
   std::string path;                              // e.g. "tjoin+asymmetric"
   int attempts = 0;                              // double covers tried
   int64_t mcf_arcs = 0;                          // directed arcs of the last cover solved
+  // The last cover's optimal potentials per double-cover node (v⁺ = 2v, v⁻ = 2v + 1), in units
+  // of cost: refinement's first LP starts from them. Empty on the last-resort paths.
+  std::vector<double> potential;
   double time_lp_guess_s = 0, time_parity_s = 0, time_linearize_s = 0, time_mcf_s = 0;
 };
 

@@ -22,8 +22,10 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   r.edges_solved = p.num_edges();
 
   ApproximateOutcome approx = approximate(simplified.unchained_problem(), config.approximate);
-  if (approx.status == SolveStatus::Feasible)
+  if (approx.status == SolveStatus::Feasible) {
     approx.flow = simplified.project_unchained(approx.flow);
+    approx.potential = simplified.project_unchained_potential(approx.potential);
+  }
   r.path = approx.path;
   r.attempts = approx.attempts;
   r.time_lp_guess_s = approx.time_lp_guess_s;
@@ -42,7 +44,7 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   std::vector<int64_t> flow = std::move(approx.flow);
   r.status = SolveStatus::Feasible;
   if (config.exact) {
-    RefineResult refined = refine(p, std::move(flow), config.refine);
+    RefineResult refined = refine(p, std::move(flow), config.refine, approx.potential);
     flow = std::move(refined.flow);
     r.rounds = refined.rounds;
     r.matchings = refined.matchings;

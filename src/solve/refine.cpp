@@ -71,7 +71,8 @@ std::optional<std::vector<char>> solve_round_matching(
 
 }  // namespace
 
-RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOptions& options) {
+RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOptions& options,
+                    std::vector<double> start_potential) {
   const auto start = std::chrono::steady_clock::now();
   RefineResult r;
   r.flow = std::move(flow);
@@ -84,13 +85,15 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
   auto improves = [&](double next_objective) {
     return next_objective < r.objective - 1e-12 * std::max(1.0, std::fabs(r.objective));
   };
+  std::vector<double> lp_potential = std::move(start_potential);
   while (true) {
     if (r.rounds >= options.max_rounds || seconds_since(start) > options.time_limit_s) return r;
     auto t = std::chrono::steady_clock::now();
     const Linearization lin = linearize(p, r.flow, unit_pieces);
     r.time_build_s += seconds_since(t);
     t = std::chrono::steady_clock::now();
-    const ResidualPruning pruned = prune_residual(lin.mcf);
+    ResidualPruning pruned = prune_residual(lin.mcf, lp_potential);
+    lp_potential = std::move(pruned.potential);
     r.time_pruning_s += seconds_since(t);
     ++r.rounds;
     if (pruned.proves_optimal) {

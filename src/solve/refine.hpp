@@ -36,12 +36,15 @@ struct RefineResult {
   double time_build_s = 0, time_pruning_s = 0, time_matching_s = 0;
   int64_t matching_nodes = 0, matching_edges = 0;  // of the largest round
   int64_t matching_free_vertices = 0;  // vertices the warm start left free, summed over rounds
-  int64_t lemon_fallbacks = 0;    // rounds our solver left to LEMON (weights too large, or a bug)
+  int64_t lemon_fallbacks = 0;  // rounds our solver left to LEMON (weights too large, or a bug)
 };
 
 // Requires a problem without outer edges and a flow feasible for it. Throws std::logic_error if
 // a round's matching has no perfect matching (the zero circulation always is one: a bug).
+// `start_potential` (per double-cover node v⁺ = 2v, v⁻ = 2v + 1, in units of cost; may be
+// empty) warm-starts the first round's LP: the approximation's last cover gives them, and each
+// later round starts from the previous round's LP (min_cost_flow.hpp).
 RefineResult refine(const Problem& problem, std::vector<int64_t> flow,
-                    const RefineOptions& options = {});
+                    const RefineOptions& options = {}, std::vector<double> start_potential = {});
 
 }  // namespace bimdf::detail

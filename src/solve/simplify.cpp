@@ -24,4 +24,17 @@ std::vector<int64_t> SimplifiedComponent::project_unchained(
   return projected;
 }
 
+std::vector<double> SimplifiedComponent::project_unchained_potential(
+    const std::vector<double>& potential) const {
+  if (!chains_ || potential.empty()) return potential;
+  std::vector<double> projected(2 * static_cast<size_t>(chains_->reduced.num_nodes()), 0.0);
+  for (size_t v = 0; v < chains_->reduced_node.size(); ++v) {
+    const int w = chains_->reduced_node[v];
+    if (w < 0) continue;
+    projected[2 * w] = potential[2 * v];
+    projected[2 * w + 1] = potential[2 * v + 1];
+  }
+  return projected;
+}
+
 }  // namespace bimdf::detail

@@ -30,6 +30,9 @@ class SimplifiedComponent {
   // 21% instead of 48% above the optimum) — and refinement on the smaller chained one.
   const Problem& unchained_problem() const { return outer_.reduced; }
   std::vector<int64_t> project_unchained(const std::vector<int64_t>& flow) const;
+  // Double-cover potentials (v⁺ = 2v, v⁻ = 2v + 1) of the unchained problem's nodes → those of
+  // problem()'s nodes, which are the unchained nodes that are not pass-through.
+  std::vector<double> project_unchained_potential(const std::vector<double>& potential) const;
   // A flow of problem() → a flow of the component.
   std::vector<int64_t> lift(std::vector<int64_t> flow) const;
 

@@ -1,0 +1,107 @@
+// Minimum-cost flow by successive shortest paths from given node potentials: our own solver
+// (no LEMON), made to be warm-started, for the directed networks of reduce/directed_mcf.hpp.
+//
+// Problem: arcs with lower bound 0, a capacity (possibly infinite) and an integer cost per
+// unit; node supplies (outflow − inflow); find a flow of minimum total cost, or prove that
+// none exists. The solver keeps node potentials π and, on the residual network, reduced costs
+// r(u→v) = c + π(u) − π(v) that are never negative on an arc with residual capacity
+// (complementary slackness), and a pseudo-flow whose imbalances it removes one shortest path
+// at a time: from a node with surplus, Dijkstra on the reduced costs until the first node
+// with a deficit is settled, potentials of the settled nodes lowered by their distance's
+// shortfall to that node's (which keeps every residual reduced cost ≥ 0 and makes the path
+// tight), then the path's bottleneck is sent. When no imbalance is left the flow is optimal.
+//
+// Warm start: `initial_potentials` may be anything (within the bound below). The start
+// saturates every arc whose reduced cost is negative and leaves the others empty, so that the
+// reduced-cost condition holds at once; good potentials (the previous, similar problem's
+// optimum) leave only a small imbalance, which is then all the work. Each search stops at the
+// first deficit it reaches, so a local imbalance costs a local search, not a pass over the
+// network — the reason this beats a network simplex started from scratch on the refinement
+// LPs of solve/refine.cpp, whose optimum moves little from round to round.
+//
+// Infinite capacities: an arc of infinite capacity is given a finite one, B = the sum of the
+// finite capacities and positive supplies plus 1, which no optimal flow of a problem with an
+// optimum needs to reach (flow decomposition). If an optimal flow of the capped problem uses
+// some such arc up to B, or a search that proves infeasibility meets one that is full, the
+// answer would depend on the cap, and the solver reports NeedsExactFallback: the caller then
+// asks a solver that decides unboundedness (backend/min_cost_flow.cpp uses LEMON's network
+// simplex). The same status comes back when costs or potentials exceed the overflow bounds:
+// |cost|·(n + 1) and |potential| below 2^60.
+//
+// Guarantee: Optimal is returned only after a check of the result — every arc within its
+// bounds, every node balanced, and no arc with residual capacity priced negative — so the flow
+// is optimal by LP duality and the potentials are an optimal dual. Deterministic.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace bimdf::detail {
+
+class ShortestPathFlow {
+ public:
+  enum class Status { NotRun, Optimal, Infeasible, NeedsExactFallback };
+
+  // Copies the network: per arc source, target, capacity (INT64_MAX: infinite) and integer
+  // cost; per node its supply. Throws std::invalid_argument on mismatched sizes, an end out
+  // of range or a negative capacity.
+  ShortestPathFlow(const std::vector<int64_t>& supply, const std::vector<int>& source,
+                   const std::vector<int>& target, const std::vector<int64_t>& capacity,
+                   const std::vector<int64_t>& cost);
+
+  // Optional, one per node in the units of the costs (default 0); see the warm start above.
+  ShortestPathFlow& initial_potentials(const std::vector<int64_t>& potential);
+
+  // The imbalance (sum of surpluses) that run()'s start would leave with the current
+  // potentials: a measure of the work ahead, O(arcs).
+  int64_t start_imbalance() const;
+
+  Status run();
+
+  Status status() const { return status_; }
+  // After Optimal: per arc its flow; per node its potential π, with c + π(source) − π(target)
+  // ≥ 0 on arcs below capacity and ≤ 0 on arcs with flow.
+  std::vector<int64_t> flow() const;
+  const std::vector<int64_t>& potential() const { return potential_; }
+  // Statistics of the last run: the imbalance the start left (sum of surpluses) and the
+  // shortest-path searches it took to remove it.
+  int64_t initial_imbalance() const { return initial_imbalance_; }
+  int64_t searches() const { return searches_; }
+  int64_t tight_routed() const { return tight_routed_; }
+
+ private:
+  // One search from `source` and the augmentation along the path it finds. Returns false
+  // when no node with a deficit can be reached.
+  bool augment_from(int source);
+  // Routes surplus to deficits along residual arcs of reduced cost 0 only (Dinic's blocking
+  // flows): with good potentials most of the start's imbalance sits on such arcs, and one
+  // breadth-first pass moves what would otherwise take a search per unit. Returns the amount.
+  int64_t route_on_tight_arcs();
+  bool verify() const;
+
+  int n_ = 0, m_ = 0;
+  // Nodes settled by the current search, in order.
+  std::vector<int> settled_order_;
+  std::vector<std::pair<int64_t, int>> heap_;
+  // Residual network, half-arcs grouped by tail (positions first_[v] .. first_[v+1]): half-arc
+  // 2a of arc a runs source → target, 2a + 1 the other way; pos_ maps a half-arc to its
+  // position, and at each position head_, cost_ (negated on 2a + 1) and residual_ capacity.
+  std::vector<int> first_, head_, half_of_pos_, pos_;
+  std::vector<int64_t> cost_, residual_;
+  std::vector<int64_t> supply_, excess_, potential_;
+  std::vector<char> capped_;  // per arc: its infinite capacity was replaced by B
+  int64_t cap_b_ = 0;
+  bool unsupported_ = false;  // overflow bounds exceeded at construction
+  Status status_ = Status::NotRun;
+  int64_t initial_imbalance_ = 0, searches_ = 0, tight_routed_ = 0;
+  std::vector<int> level_;
+
+  // Search state, reset only where touched.
+  std::vector<int64_t> dist_;
+  std::vector<int> pred_pos_;  // position of the half-arc that reached each node
+  std::vector<int> touched_;
+  std::vector<char> settled_;
+};
+
+}  // namespace bimdf::detail
