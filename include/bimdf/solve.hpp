@@ -86,6 +86,10 @@ class Solver {
   Solver& parity_repair(ParityRepairMode mode);
   Solver& double_cover(DoubleCoverMode mode);
   Solver& collapse_chains(bool enable);
+  // Run the approximation on the problem before chains are collapsed, and project its flow
+  // onto the chains: that double cover approximates a little better (median gap on the shared
+  // instances 3.0% instead of 3.7%) but its LP guess costs about 1.7× as much. Default false.
+  Solver& approximate_unchained(bool enable);
   // Refinement rounds per component before giving up on proving optimality (status Feasible
   // with the best flow so far). Default: unlimited (refinement always terminates).
   Solver& max_rounds(int64_t rounds);
@@ -114,6 +118,7 @@ class Solver {
   ParityRepairMode parity_ = ParityRepairMode::SpanningTreeTJoin;
   DoubleCoverMode cover_ = DoubleCoverMode::Asymmetric;
   bool collapse_chains_ = true;
+  bool approximate_unchained_ = false;
   int64_t max_rounds_ = -1;
   double time_limit_s_ = -1;
   int threads_ = 1;
@@ -136,6 +141,10 @@ class ApproximateSolver {
   ApproximateSolver& double_cover(DoubleCoverMode mode);
   // Collapse chains of pass-through nodes before solving (§3.10). Default true.
   ApproximateSolver& collapse_chains(bool enable);
+  // Run the approximation on the problem before chains are collapsed, and project its flow
+  // onto the chains: that double cover approximates a little better (median gap on the shared
+  // instances 3.0% instead of 3.7%) but its LP guess costs about 1.7× as much. Default false.
+  ApproximateSolver& approximate_unchained(bool enable);
 
   // Solves; returns Feasible or Infeasible (also available as solution().status). Throws
   // SolverError as described above and std::overflow_error for values beyond 64-bit sums.
@@ -153,6 +162,7 @@ class ApproximateSolver {
   ParityRepairMode parity_ = ParityRepairMode::SpanningTreeTJoin;
   DoubleCoverMode cover_ = DoubleCoverMode::Asymmetric;
   bool collapse_chains_ = true;
+  bool approximate_unchained_ = false;
   Solution solution_;
 };
 

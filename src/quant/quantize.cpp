@@ -71,7 +71,10 @@ Quantization quantize_at(const Layout& layout, double edge_length, const Quantiz
     r.time_model_s = seconds_since(t);
     t = std::chrono::steady_clock::now();
     Solver solver(r.model.problem);
-    solver.threads(o.threads).lower_bound(false).matching(o.matching);
+    solver.threads(o.threads)
+        .lower_bound(false)
+        .matching(o.matching)
+        .approximate_unchained(o.approximate_unchained);
     if (o.time_limit >= 0) solver.time_limit(o.time_limit);
     const SolveStatus status = solver.run();
     r.time_solve_s = seconds_since(t);

@@ -18,6 +18,8 @@ struct ApproximateOptions {
   int max_deviation = 5;
   ParityMode parity = ParityMode::SpanningTreeTJoin;
   DoubleCoverKind cover = DoubleCoverKind::Asymmetric;
+  // Approximate the problem before chain collapse (component.cpp): see bimdf/solve.hpp.
+  bool unchained = false;
 };
 
 // Why a component has no flow; ids are the component's own.

@@ -21,8 +21,10 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   r.nodes_solved = p.num_nodes();
   r.edges_solved = p.num_edges();
 
-  ApproximateOutcome approx = approximate(simplified.unchained_problem(), config.approximate);
-  if (approx.status == SolveStatus::Feasible) {
+  const bool unchained = config.approximate.unchained;
+  ApproximateOutcome approx =
+      approximate(unchained ? simplified.unchained_problem() : p, config.approximate);
+  if (approx.status == SolveStatus::Feasible && unchained) {
     approx.flow = simplified.project_unchained(approx.flow);
     approx.potential = simplified.project_unchained_potential(approx.potential);
   }
@@ -34,10 +36,9 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   r.time_mcf_s = approx.time_mcf_s;
   if (approx.status == SolveStatus::Infeasible) {
     r.proof = approx.proof;
-    // Node ids of the unchained problem are the component's, plus the boundary node.
-    if (r.proof.kind == InfeasibilityProof::Kind::OddParity &&
-        r.proof.node >= component.num_nodes())
-      r.proof.node = -1;
+    if (r.proof.kind == InfeasibilityProof::Kind::OddParity)
+      r.proof.node = unchained ? (r.proof.node < component.num_nodes() ? r.proof.node : -1)
+                               : simplified.component_node(r.proof.node);
     return r;
   }
   r.approximate_objective = objective(component, simplified.lift(approx.flow));

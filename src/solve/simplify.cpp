@@ -1,9 +1,13 @@
 #include "solve/simplify.hpp"
 
+#include <algorithm>
+
 namespace bimdf::detail {
 
 SimplifiedComponent::SimplifiedComponent(const Problem& component, bool collapse)
-    : fixed_(eliminate_fixed_edges(component)), outer_(eliminate_outer_edges(fixed_.reduced)) {
+    : fixed_(eliminate_fixed_edges(component)),
+      outer_(eliminate_outer_edges(fixed_.reduced)),
+      component_nodes_(component.num_nodes()) {
   if (!collapse) return;
   chains_ = collapse_chains(outer_.reduced);
   if (chains_->empty_chain_edge >= 0)
@@ -13,6 +17,15 @@ SimplifiedComponent::SimplifiedComponent(const Problem& component, bool collapse
 std::vector<int64_t> SimplifiedComponent::lift(std::vector<int64_t> flow) const {
   if (chains_) flow = chains_->lift(flow);
   return fixed_.lift(outer_.lift(flow));
+}
+
+int SimplifiedComponent::component_node(int node) const {
+  int unchained = node;  // fixed- and outer-edge elimination keep the component's node ids
+  if (chains_) {
+    const auto& of = chains_->reduced_node;
+    unchained = static_cast<int>(std::find(of.begin(), of.end(), node) - of.begin());
+  }
+  return unchained < component_nodes_ ? unchained : -1;
 }
 
 std::vector<int64_t> SimplifiedComponent::project_unchained(

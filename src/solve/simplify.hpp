@@ -26,13 +26,16 @@ class SimplifiedComponent {
   int empty_chain_edge() const { return empty_chain_edge_; }
   // The problem before chain collapse (fixed and outer edges eliminated), and the projection of
   // its flows onto problem(): every edge of a chain carries the chain's flow. The approximation
-  // runs on the unchained problem — the double cover approximates it markedly better (bull:
-  // 21% instead of 48% above the optimum) — and refinement on the smaller chained one.
+  // may run on the unchained problem (ApproximateOptions::unchained), whose double cover
+  // approximates a little better, while refinement always runs on the smaller chained one.
   const Problem& unchained_problem() const { return outer_.reduced; }
   std::vector<int64_t> project_unchained(const std::vector<int64_t>& flow) const;
   // Double-cover potentials (v⁺ = 2v, v⁻ = 2v + 1) of the unchained problem's nodes → those of
   // problem()'s nodes, which are the unchained nodes that are not pass-through.
   std::vector<double> project_unchained_potential(const std::vector<double>& potential) const;
+  // The component's id of a node of problem(), or −1 for the boundary node that carries the
+  // outer edges (outer_edges.hpp). Node ids of the unchained problem are the component's.
+  int component_node(int node) const;
   // A flow of problem() → a flow of the component.
   std::vector<int64_t> lift(std::vector<int64_t> flow) const;
 
@@ -40,6 +43,7 @@ class SimplifiedComponent {
   FixedEdgeElimination fixed_;
   OuterEdgeElimination outer_;
   std::optional<ChainCollapse> chains_;
+  int component_nodes_ = 0;
   int empty_chain_edge_ = -1;
 };
 

@@ -8,8 +8,9 @@ namespace bimdf {
 namespace {
 
 detail::ApproximateOptions approximate_options(int max_deviation, ParityRepairMode parity,
-                                               DoubleCoverMode cover) {
+                                               DoubleCoverMode cover, bool unchained) {
   detail::ApproximateOptions o;
+  o.unchained = unchained;
   o.max_deviation = max_deviation;
   o.parity = parity == ParityRepairMode::SpanningTreeTJoin ? detail::ParityMode::SpanningTreeTJoin
                                                            : detail::ParityMode::RoundToEven;
@@ -42,10 +43,15 @@ ApproximateSolver& ApproximateSolver::collapse_chains(bool enable) {
   collapse_chains_ = enable;
   return *this;
 }
+ApproximateSolver& ApproximateSolver::approximate_unchained(bool enable) {
+  approximate_unchained_ = enable;
+  return *this;
+}
 SolveStatus ApproximateSolver::run() {
   detail::SolverConfig config;
   config.component.collapse_chains = collapse_chains_;
-  config.component.approximate = approximate_options(max_deviation_, parity_, cover_);
+  config.component.approximate =
+      approximate_options(max_deviation_, parity_, cover_, approximate_unchained_);
   solution_ = detail::solve_problem(problem_, config);
   if (solution_.status == SolveStatus::Optimal) solution_.status = SolveStatus::Feasible;
   return solution_.status;
@@ -66,6 +72,10 @@ Solver& Solver::double_cover(DoubleCoverMode mode) {
 }
 Solver& Solver::collapse_chains(bool enable) {
   collapse_chains_ = enable;
+  return *this;
+}
+Solver& Solver::approximate_unchained(bool enable) {
+  approximate_unchained_ = enable;
   return *this;
 }
 Solver& Solver::max_rounds(int64_t rounds) {
@@ -94,7 +104,8 @@ Solver& Solver::matching(MatchingBackend backend) {
 SolveStatus Solver::run() {
   detail::SolverConfig config;
   config.component.collapse_chains = collapse_chains_;
-  config.component.approximate = approximate_options(max_deviation_, parity_, cover_);
+  config.component.approximate =
+      approximate_options(max_deviation_, parity_, cover_, approximate_unchained_);
   config.component.exact = true;
   config.component.lower_bound = lower_bound_;
   if (max_rounds_ > 0) config.component.refine.max_rounds = max_rounds_;

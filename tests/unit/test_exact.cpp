@@ -19,6 +19,7 @@
 #include "random_problem.hpp"
 #include "reduce/outer_edges.hpp"
 #include "solve/lower_bound.hpp"
+#include "solve/simplify.hpp"
 #include "test_helpers.hpp"
 
 namespace bimdf {
@@ -198,6 +199,49 @@ TEST(Exact, ResultDoesNotDependOnTheThreadCount) {
     compared += std::get<int64_t>(one.solution().stats.at("components")) > 1;
   }
   EXPECT_GT(compared, 40);
+}
+
+// The approximation may run before or after chain collapse (Solver::approximate_unchained):
+// different starts, the same optimum.
+TEST(Exact, ApproximatingBeforeOrAfterChainCollapseReachesTheSameOptimum) {
+  std::mt19937_64 rng(17);
+  testing::RandomProblemOptions opt;
+  opt.min_nodes = 20;
+  opt.max_nodes = 60;
+  opt.min_edges = 30;
+  opt.max_edges = 90;
+  int optimal = 0;
+  for (int i = 0; i < testing::scaled(200); ++i) {
+    Problem p = testing::random_problem(rng, opt);
+    testing::plant_feasible_demands(p, rng);
+    Solver chained(p), unchained(p);
+    unchained.approximate_unchained(true);
+    const SolveStatus status = chained.run();
+    ASSERT_EQ(status, unchained.run()) << "problem " << i;
+    if (status != SolveStatus::Optimal) continue;
+    ++optimal;
+    EXPECT_TRUE(close(chained.solution().objective, unchained.solution().objective))
+        << "problem " << i << ": " << chained.solution().objective << " vs "
+        << unchained.solution().objective;
+  }
+  EXPECT_GT(optimal, testing::scaled(200) / 2);
+}
+
+TEST(Exact, SimplifiedNodesMapBackToTheComponent) {
+  // Node 0 passes flow from 1 on to 2 (a chain; 2 has a demand, so it does not pass flow on);
+  // 3 has two outer edges, which end at the boundary node that outer-edge elimination adds.
+  Problem p;
+  for (int v = 0; v < 4; ++v) p.add_node(v == 2 ? 1 : 0);
+  p.add_edge({1, false}, End{0, true}, 0, 5, Cost::quad_deviation(2, 1));
+  p.add_edge({0, false}, End{2, true}, 0, 5, Cost::quad_deviation(3, 1));
+  p.add_edge({2, false}, End{3, true}, 0, 5, Cost::quad_deviation(1, 1));
+  p.add_edge({3, false}, std::nullopt, 0, 5, Cost::quad_deviation(1, 1));
+  p.add_edge({3, true}, std::nullopt, 0, 5, Cost::quad_deviation(1, 1));
+  const detail::SimplifiedComponent simplified(p, true);
+  std::vector<int> back;
+  for (int v = 0; v < simplified.problem().num_nodes(); ++v)
+    back.push_back(simplified.component_node(v));
+  EXPECT_EQ(back, (std::vector<int>{1, 2, 3, -1}));
 }
 
 TEST(Exact, LimitsReturnTheBestFlowAsFeasible) {

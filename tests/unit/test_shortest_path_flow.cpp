@@ -101,8 +101,12 @@ void expect_optimal(const Network& g, const std::vector<int64_t>& flow,
     net[g.source[a]] += flow[a];
     net[g.target[a]] -= flow[a];
     const int64_t r = g.cost[a] + potential[g.source[a]] - potential[g.target[a]];
-    if (flow[a] < g.capacity[a]) EXPECT_GE(r, 0) << "arc " << a;
-    if (flow[a] > 0) EXPECT_LE(r, 0) << "arc " << a;
+    if (flow[a] < g.capacity[a]) {
+      EXPECT_GE(r, 0) << "arc " << a;
+    }
+    if (flow[a] > 0) {
+      EXPECT_LE(r, 0) << "arc " << a;
+    }
   }
   EXPECT_EQ(net, g.supply);
 }
@@ -164,7 +168,9 @@ TEST(ShortestPathFlow, MatchesNetworkSimplexFromAnyStart) {
     ASSERT_EQ(status, ShortestPathFlow::Status::Optimal) << "trial " << trial;
     EXPECT_EQ(cost_of(g, solver.flow()), cost_of(g, lemon.flow)) << "trial " << trial;
     expect_optimal(g, solver.flow(), solver.potential());
-    if (!optimal_potential.empty()) EXPECT_EQ(solver.potential(), optimal_potential);
+    if (!optimal_potential.empty()) {
+      EXPECT_EQ(solver.potential(), optimal_potential);
+    }
     ++compared;
   }
   EXPECT_GT(compared, 150);
