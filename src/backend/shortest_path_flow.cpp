@@ -53,55 +53,49 @@ ShortestPathFlow::ShortestPathFlow(const std::vector<int64_t>& supply,
   }
   for (int v = 0; v < n_; ++v) first_[v + 1] += first_[v];
   std::vector<int> fill(first_.begin(), first_.end() - 1);
-  head_.resize(2 * m_);
-  cost_.resize(2 * m_);
-  residual_.resize(2 * m_);
-  half_of_pos_.resize(2 * m_);
-  pos_.resize(2 * m_);
+  arc_.resize(2 * static_cast<size_t>(m_));
+  pos_.resize(2 * static_cast<size_t>(m_));
   capped_.assign(m_, 0);
   for (int a = 0; a < m_; ++a) {
     const int p = fill[source[a]]++, q = fill[target[a]]++;
     capped_[a] = capacity[a] == kInf;
-    head_[p] = target[a];
-    cost_[p] = cost[a];
-    residual_[p] = capped_[a] ? cap_b_ : capacity[a];
-    head_[q] = source[a];
-    cost_[q] = -cost[a];
-    residual_[q] = 0;
-    half_of_pos_[p] = 2 * a;
-    half_of_pos_[q] = 2 * a + 1;
+    arc_[p] = {cost[a], capped_[a] ? cap_b_ : capacity[a], target[a], q};
+    arc_[q] = {-cost[a], 0, source[a], p};
     pos_[2 * a] = p;
     pos_[2 * a + 1] = q;
   }
-  potential_.assign(n_, 0);
+  node_.assign(n_, NodeState{0, kInf, -1, -1});
 }
 
 ShortestPathFlow& ShortestPathFlow::initial_potentials(const std::vector<int64_t>& potential) {
   if (static_cast<int>(potential.size()) != n_)
     throw std::invalid_argument("shortest path flow: " + std::to_string(potential.size()) +
                                 " initial potentials for " + std::to_string(n_) + " nodes");
-  for (int64_t p : potential)
-    if (p > kPotentialBound / 2 || p < -kPotentialBound / 2) {
-      // Too large to keep the bounds during the run: start from zero instead.
-      potential_.assign(n_, 0);
-      return *this;
-    }
-  potential_.assign(potential.begin(), potential.end());
+  // Potentials too large to keep the bounds during the run: start from zero instead.
+  const bool usable = std::all_of(potential.begin(), potential.end(), [](int64_t p) {
+    return p <= kPotentialBound / 2 && p >= -kPotentialBound / 2;
+  });
+  for (int v = 0; v < n_; ++v) node_[v].potential = usable ? potential[v] : 0;
   return *this;
+}
+
+std::vector<int64_t> ShortestPathFlow::potential() const {
+  std::vector<int64_t> p(n_);
+  for (int v = 0; v < n_; ++v) p[v] = node_[v].potential;
+  return p;
 }
 
 int64_t ShortestPathFlow::start_imbalance() const {
   std::vector<int64_t> excess = supply_;
-  for (int v = 0; v < n_; ++v)
-    for (int p = first_[v]; p < first_[v + 1]; ++p) {
-      if (half_of_pos_[p] & 1) continue;
-      const int w = head_[p];
-      if (cost_[p] + potential_[v] - potential_[w] < 0) {
-        const int64_t full = residual_[p] + residual_[pos_[half_of_pos_[p] + 1]];
-        excess[v] -= full;
-        excess[w] += full;
-      }
+  for (int a = 0; a < m_; ++a) {
+    const ResidualArc& forward = arc_[pos_[2 * a]];
+    const int v = arc_[forward.reverse].head, w = forward.head;
+    if (forward.cost + node_[v].potential - node_[w].potential < 0) {
+      const int64_t full = forward.capacity + arc_[forward.reverse].capacity;
+      excess[v] -= full;
+      excess[w] += full;
     }
+  }
   int64_t sum = 0;
   for (int64_t e : excess) sum += std::max<int64_t>(e, 0);
   return sum;
@@ -109,30 +103,24 @@ int64_t ShortestPathFlow::start_imbalance() const {
 
 ShortestPathFlow::Status ShortestPathFlow::run() {
   if (unsupported_) return status_ = Status::NeedsExactFallback;
-  // Start: saturate every arc priced negative, so that no residual arc is.
+  // Start: saturate every arc priced negative, so that no residual arc is. Capacities are
+  // reset here too, so that run() may be called again.
   excess_ = supply_;
-  for (int v = 0; v < n_; ++v)
-    for (int p = first_[v]; p < first_[v + 1]; ++p) {
-      if (half_of_pos_[p] & 1) continue;
-      const int w = head_[p];
-      const int q = pos_[half_of_pos_[p] + 1];
-      // Rows are reset here too, so that run() may be called again.
-      residual_[p] += residual_[q];
-      residual_[q] = 0;
-      if (cost_[p] + potential_[v] - potential_[w] < 0) {
-        residual_[q] = residual_[p];
-        residual_[p] = 0;
-        excess_[v] -= residual_[q];
-        excess_[w] += residual_[q];
-      }
+  for (int a = 0; a < m_; ++a) {
+    ResidualArc& forward = arc_[pos_[2 * a]];
+    ResidualArc& backward = arc_[forward.reverse];
+    const int v = backward.head, w = forward.head;
+    forward.capacity += backward.capacity;
+    backward.capacity = 0;
+    if (forward.cost + node_[v].potential - node_[w].potential < 0) {
+      std::swap(forward.capacity, backward.capacity);
+      excess_[v] -= backward.capacity;
+      excess_[w] += backward.capacity;
     }
+  }
   initial_imbalance_ = 0;
   for (int64_t e : excess_) initial_imbalance_ += std::max<int64_t>(e, 0);
   searches_ = 0;
-  dist_.assign(n_, kInf);
-  pred_pos_.assign(n_, -1);
-  settled_.assign(n_, 0);
-  touched_.clear();
   tight_routed_ = route_on_tight_arcs();
   for (int v = 0; v < n_; ++v)
     while (excess_[v] > 0) {
@@ -140,87 +128,83 @@ ShortestPathFlow::Status ShortestPathFlow::run() {
         // No deficit reachable: the nodes reached have more supply than can leave them —
         // unless a capped arc is full, whose true capacity would let more out.
         for (int a = 0; a < m_; ++a)
-          if (capped_[a] && residual_[pos_[2 * a]] == 0)
+          if (capped_[a] && arc_[pos_[2 * a]].capacity == 0)
             return status_ = Status::NeedsExactFallback;
         return status_ = Status::Infeasible;
       }
       if (status_ == Status::NeedsExactFallback) return status_;
     }
   for (int a = 0; a < m_; ++a)
-    if (capped_[a] && residual_[pos_[2 * a]] == 0) return status_ = Status::NeedsExactFallback;
+    if (capped_[a] && arc_[pos_[2 * a]].capacity == 0) return status_ = Status::NeedsExactFallback;
   if (!verify()) throw std::logic_error("shortest path flow: the optimality check failed");
   return status_ = Status::Optimal;
 }
 
 bool ShortestPathFlow::augment_from(int s) {
   ++searches_;
+  if (search_mark_ >= std::numeric_limits<int>::max() - 2) {
+    for (NodeState& x : node_) x.mark = -1;
+    search_mark_ = 0;
+  }
+  search_mark_ += 2;
+  const int reached = search_mark_, settled = search_mark_ + 1;
   // A binary min-heap of (distance, node) with stale entries skipped on pop.
   auto& heap = heap_;
   const auto later = std::greater<std::pair<int64_t, int>>();
   heap.clear();
-  dist_[s] = 0;
-  touched_.push_back(s);
-  heap.push_back({0, s});
-  int t = -1;
   std::vector<int>& settled_order = settled_order_;
   settled_order.clear();
+  node_[s].dist = 0;
+  node_[s].mark = reached;
+  heap.push_back({0, s});
+  int t = -1;
   while (!heap.empty()) {
     std::pop_heap(heap.begin(), heap.end(), later);
     const auto [d, u] = heap.back();
     heap.pop_back();
-    if (settled_[u] || d != dist_[u]) continue;
-    settled_[u] = 1;
+    NodeState& x = node_[u];
+    if (x.mark == settled || d != x.dist) continue;
+    x.mark = settled;
     settled_order.push_back(u);
     if (excess_[u] < 0) {
       t = u;
       break;
     }
-    const int64_t pu = potential_[u];
+    const int64_t base = d + x.potential;
     for (int p = first_[u]; p < first_[u + 1]; ++p) {
-      if (residual_[p] == 0) continue;
-      const int w = head_[p];
-      if (settled_[w]) continue;
-      const int64_t nd = d + (cost_[p] + pu - potential_[w]);
-      if (nd < dist_[w]) {
-        if (dist_[w] == kInf) touched_.push_back(w);
-        dist_[w] = nd;
-        pred_pos_[w] = p;
-        heap.push_back({nd, w});
+      const ResidualArc& a = arc_[p];
+      if (a.capacity == 0) continue;
+      NodeState& y = node_[a.head];
+      if (y.mark == settled) continue;
+      const int64_t nd = base + a.cost - y.potential;
+      if (y.mark != reached || nd < y.dist) {
+        y.mark = reached;
+        y.dist = nd;
+        y.pred = p;
+        heap.push_back({nd, a.head});
         std::push_heap(heap.begin(), heap.end(), later);
       }
     }
   }
-  if (t >= 0) {
-    // Potentials: settled nodes drop by their shortfall to t's distance; with the others
-    // unchanged, every residual reduced cost stays ≥ 0 and the path to t becomes tight.
-    const int64_t dt = dist_[t];
-    for (int v : settled_order) {
-      potential_[v] += dist_[v] - dt;
-      if (potential_[v] < -kPotentialBound) status_ = Status::NeedsExactFallback;
-    }
-    int64_t delta = std::min(excess_[s], -excess_[t]);
-    for (int v = t; v != s;) {
-      const int p = pred_pos_[v];
-      delta = std::min(delta, residual_[p]);
-      v = head_[pos_[half_of_pos_[p] ^ 1]];
-    }
-    for (int v = t; v != s;) {
-      const int p = pred_pos_[v];
-      const int q = pos_[half_of_pos_[p] ^ 1];
-      residual_[p] -= delta;
-      residual_[q] += delta;
-      v = head_[q];
-    }
-    excess_[s] -= delta;
-    excess_[t] += delta;
+  if (t < 0) return false;
+  // Potentials: settled nodes drop by their shortfall to t's distance; with the others
+  // unchanged, every residual reduced cost stays ≥ 0 and the path to t becomes tight.
+  const int64_t dt = node_[t].dist;
+  for (int v : settled_order) {
+    node_[v].potential += node_[v].dist - dt;
+    if (node_[v].potential < -kPotentialBound) status_ = Status::NeedsExactFallback;
   }
-  for (int v : touched_) {
-    dist_[v] = kInf;
-    settled_[v] = 0;
-    pred_pos_[v] = -1;
+  int64_t delta = std::min(excess_[s], -excess_[t]);
+  for (int v = t; v != s; v = tail(node_[v].pred))
+    delta = std::min(delta, arc_[node_[v].pred].capacity);
+  for (int v = t; v != s; v = tail(node_[v].pred)) {
+    ResidualArc& a = arc_[node_[v].pred];
+    a.capacity -= delta;
+    arc_[a.reverse].capacity += delta;
   }
-  touched_.clear();
-  return t >= 0;
+  excess_[s] -= delta;
+  excess_[t] += delta;
+  return true;
 }
 
 int64_t ShortestPathFlow::route_on_tight_arcs() {
@@ -229,7 +213,8 @@ int64_t ShortestPathFlow::route_on_tight_arcs() {
   std::vector<int> queue, path;
   std::vector<int> current(n_);
   auto tight = [&](int u, int p) {
-    return residual_[p] > 0 && cost_[p] + potential_[u] - potential_[head_[p]] == 0;
+    const ResidualArc& a = arc_[p];
+    return a.capacity > 0 && a.cost + node_[u].potential - node_[a.head].potential == 0;
   };
   while (true) {
     // Levels by breadth-first search from every surplus over tight residual arcs.
@@ -245,9 +230,9 @@ int64_t ShortestPathFlow::route_on_tight_arcs() {
       const int u = queue[i];
       if (excess_[u] < 0) reached = true;
       for (int p = first_[u]; p < first_[u + 1]; ++p)
-        if (level[head_[p]] < 0 && tight(u, p)) {
-          level[head_[p]] = level[u] + 1;
-          queue.push_back(head_[p]);
+        if (level[arc_[p].head] < 0 && tight(u, p)) {
+          level[arc_[p].head] = level[u] + 1;
+          queue.push_back(arc_[p].head);
         }
     }
     if (!reached) return routed;
@@ -261,10 +246,10 @@ int64_t ShortestPathFlow::route_on_tight_arcs() {
       while (excess_[s] > 0) {
         if (v != s && excess_[v] < 0) {
           int64_t delta = std::min(excess_[s], -excess_[v]);
-          for (int p : path) delta = std::min(delta, residual_[p]);
+          for (int p : path) delta = std::min(delta, arc_[p].capacity);
           for (int p : path) {
-            residual_[p] -= delta;
-            residual_[pos_[half_of_pos_[p] ^ 1]] += delta;
+            arc_[p].capacity -= delta;
+            arc_[arc_[p].reverse].capacity += delta;
           }
           excess_[s] -= delta;
           excess_[v] += delta;
@@ -274,17 +259,17 @@ int64_t ShortestPathFlow::route_on_tight_arcs() {
           continue;
         }
         int& p = current[v];
-        while (p < first_[v + 1] && !(level[head_[p]] == level[v] + 1 && tight(v, p))) ++p;
+        while (p < first_[v + 1] && !(level[arc_[p].head] == level[v] + 1 && tight(v, p))) ++p;
         if (p < first_[v + 1]) {
           path.push_back(p);
-          v = head_[p];
+          v = arc_[p].head;
           continue;
         }
         level[v] = -1;  // dead end
         if (path.empty()) break;
         const int back = path.back();
         path.pop_back();
-        v = head_[pos_[half_of_pos_[back] ^ 1]];
+        v = tail(back);
         ++current[v];
       }
     }
@@ -293,25 +278,23 @@ int64_t ShortestPathFlow::route_on_tight_arcs() {
 
 bool ShortestPathFlow::verify() const {
   std::vector<int64_t> balance(n_, 0);
-  for (int v = 0; v < n_; ++v)
-    for (int p = first_[v]; p < first_[v + 1]; ++p) {
-      const int w = head_[p];
-      if (residual_[p] < 0) return false;
-      if (residual_[p] > 0 && cost_[p] + potential_[v] - potential_[w] < 0) return false;
-      if ((half_of_pos_[p] & 1) == 0) {
-        const int64_t f = residual_[pos_[half_of_pos_[p] + 1]];
-        balance[v] += f;
-        balance[w] -= f;
-      }
-    }
-  for (int v = 0; v < n_; ++v)
-    if (balance[v] != supply_[v]) return false;
-  return true;
+  for (int a = 0; a < m_; ++a) {
+    const ResidualArc& forward = arc_[pos_[2 * a]];
+    const ResidualArc& backward = arc_[forward.reverse];
+    const int v = backward.head, w = forward.head;
+    if (forward.capacity < 0 || backward.capacity < 0) return false;
+    const int64_t reduced = forward.cost + node_[v].potential - node_[w].potential;
+    if ((forward.capacity > 0 && reduced < 0) || (backward.capacity > 0 && reduced > 0))
+      return false;
+    balance[v] += backward.capacity;  // the flow
+    balance[w] -= backward.capacity;
+  }
+  return balance == supply_;
 }
 
 std::vector<int64_t> ShortestPathFlow::flow() const {
   std::vector<int64_t> f(m_);
-  for (int a = 0; a < m_; ++a) f[a] = residual_[pos_[2 * a + 1]];
+  for (int a = 0; a < m_; ++a) f[a] = arc_[pos_[2 * a + 1]].capacity;
   return f;
 }
 

@@ -63,7 +63,7 @@ class ShortestPathFlow {
   // After Optimal: per arc its flow; per node its potential π, with c + π(source) − π(target)
   // ≥ 0 on arcs below capacity and ≤ 0 on arcs with flow.
   std::vector<int64_t> flow() const;
-  const std::vector<int64_t>& potential() const { return potential_; }
+  std::vector<int64_t> potential() const;
   // Statistics of the last run: the imbalance the start left (sum of surpluses) and the
   // shortest-path searches it took to remove it.
   int64_t initial_imbalance() const { return initial_imbalance_; }
@@ -81,27 +81,40 @@ class ShortestPathFlow {
   bool verify() const;
 
   int n_ = 0, m_ = 0;
-  // Nodes settled by the current search, in order.
-  std::vector<int> settled_order_;
-  std::vector<std::pair<int64_t, int>> heap_;
-  // Residual network, half-arcs grouped by tail (positions first_[v] .. first_[v+1]): half-arc
-  // 2a of arc a runs source → target, 2a + 1 the other way; pos_ maps a half-arc to its
-  // position, and at each position head_, cost_ (negated on 2a + 1) and residual_ capacity.
-  std::vector<int> first_, head_, half_of_pos_, pos_;
-  std::vector<int64_t> cost_, residual_;
-  std::vector<int64_t> supply_, excess_, potential_;
+  // Residual network: half-arcs grouped by tail, at positions first_[v] .. first_[v+1] − 1.
+  // Half-arc 2a of arc a runs source → target, 2a + 1 the other way (cost negated); pos_ maps
+  // a half-arc to its position. Everything a search reads of a half-arc sits in one record.
+  struct ResidualArc {
+    int64_t cost;
+    int64_t capacity;  // residual
+    int head;
+    int reverse;  // position of the opposite half-arc
+  };
+  std::vector<int> first_, pos_;
+  std::vector<ResidualArc> arc_;
+  int tail(int position) const { return arc_[arc_[position].reverse].head; }
+  // Per node, what a search reads of it in one record. `mark` says what `dist` and `pred`
+  // mean: 2k while search k has reached the node, 2k + 1 once it settled it; older values are
+  // stale, so searches need no reset.
+  struct NodeState {
+    int64_t potential;
+    int64_t dist;
+    int pred;  // position of the half-arc that reached the node
+    int mark;
+  };
+  std::vector<NodeState> node_;
+  std::vector<int64_t> supply_, excess_;
   std::vector<char> capped_;  // per arc: its infinite capacity was replaced by B
   int64_t cap_b_ = 0;
   bool unsupported_ = false;  // overflow bounds exceeded at construction
   Status status_ = Status::NotRun;
   int64_t initial_imbalance_ = 0, searches_ = 0, tight_routed_ = 0;
-  std::vector<int> level_;
+  int search_mark_ = 0;  // 2k for the current search k
 
-  // Search state, reset only where touched.
-  std::vector<int64_t> dist_;
-  std::vector<int> pred_pos_;  // position of the half-arc that reached each node
-  std::vector<int> touched_;
-  std::vector<char> settled_;
+  // Scratch space of the searches and the tight routing.
+  std::vector<int> settled_order_;
+  std::vector<std::pair<int64_t, int>> heap_;
+  std::vector<int> level_;
 };
 
 }  // namespace bimdf::detail
