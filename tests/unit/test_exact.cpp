@@ -19,6 +19,7 @@
 #include "random_problem.hpp"
 #include "reduce/outer_edges.hpp"
 #include "solve/lower_bound.hpp"
+#include "solve/refine.hpp"
 #include "solve/simplify.hpp"
 #include "test_helpers.hpp"
 
@@ -225,6 +226,37 @@ TEST(Exact, ApproximatingBeforeOrAfterChainCollapseReachesTheSameOptimum) {
         << unchained.solution().objective;
   }
   EXPECT_GT(optimal, testing::scaled(200) / 2);
+}
+
+// Refinement's LPs start from given potentials (refine.hpp); bad ones may cost time, never the
+// optimum: from a feasible flow, refinement with random start potentials ends where it ends
+// without any.
+TEST(Exact, RefinementFromAnyStartingPotentialsReachesTheOptimum) {
+  std::mt19937_64 rng(19);
+  testing::RandomProblemOptions opt;
+  opt.min_nodes = 10;
+  opt.max_nodes = 40;
+  opt.min_edges = 15;
+  opt.max_edges = 80;
+  opt.outer_edges = false;
+  int compared = 0;
+  for (int i = 0; i < testing::scaled(100); ++i) {
+    Problem p = testing::random_problem(rng, opt);
+    testing::plant_feasible_demands(p, rng);
+    ApproximateSolver start(p);
+    start.collapse_chains(false);
+    if (start.run() != SolveStatus::Feasible) continue;
+    std::vector<double> potential(2 * p.num_nodes());
+    const double spread = i % 2 ? 50 : 0.01;  // far from and near to zero
+    for (double& x : potential) x = std::uniform_real_distribution<double>(-spread, spread)(rng);
+    const detail::RefineResult cold = detail::refine(p, start.solution().flow);
+    const detail::RefineResult warm = detail::refine(p, start.solution().flow, {}, potential);
+    ASSERT_TRUE(cold.converged && warm.converged) << "problem " << i;
+    EXPECT_TRUE(close(cold.objective, warm.objective))
+        << "problem " << i << ": " << cold.objective << " vs " << warm.objective;
+    ++compared;
+  }
+  EXPECT_GT(compared, testing::scaled(100) / 2);
 }
 
 TEST(Exact, SimplifiedNodesMapBackToTheComponent) {
