@@ -11,6 +11,7 @@
 namespace bimdf::detail {
 namespace {
 
+constexpr int kTightPasses = 3;
 constexpr int64_t kInf = std::numeric_limits<int64_t>::max();
 // Potentials stay below 2^61 in magnitude, costs below 2^60: reduced costs and distances
 // (path costs plus two potentials) then stay below 2^63.
@@ -102,6 +103,7 @@ int64_t ShortestPathFlow::start_imbalance() const {
 }
 
 ShortestPathFlow::Status ShortestPathFlow::run() {
+  status_ = Status::NotRun;
   if (unsupported_) return status_ = Status::NeedsExactFallback;
   // Start: saturate every arc priced negative, so that no residual arc is. Capacities are
   // reset here too, so that run() may be called again.
@@ -121,10 +123,13 @@ ShortestPathFlow::Status ShortestPathFlow::run() {
   initial_imbalance_ = 0;
   for (int64_t e : excess_) initial_imbalance_ += std::max<int64_t>(e, 0);
   searches_ = 0;
+  work_ = 0;
   tight_routed_ = route_on_tight_arcs();
   for (int v = 0; v < n_; ++v)
     while (excess_[v] > 0) {
-      if (!augment_from(v)) {
+      const Search search = augment_from(v);
+      if (search == Search::GaveUp) return status_ = Status::WorkLimitReached;
+      if (search == Search::NoDeficit) {
         // No deficit reachable: the nodes reached have more supply than can leave them —
         // unless a capped arc is full, whose true capacity would let more out.
         for (int a = 0; a < m_; ++a)
@@ -140,7 +145,7 @@ ShortestPathFlow::Status ShortestPathFlow::run() {
   return status_ = Status::Optimal;
 }
 
-bool ShortestPathFlow::augment_from(int s) {
+ShortestPathFlow::Search ShortestPathFlow::augment_from(int s) {
   ++searches_;
   if (search_mark_ >= std::numeric_limits<int>::max() - 2) {
     for (NodeState& x : node_) x.mark = -1;
@@ -159,6 +164,7 @@ bool ShortestPathFlow::augment_from(int s) {
   heap.push_back({0, s});
   int t = -1;
   while (!heap.empty()) {
+    if (work_ > work_limit_) return Search::GaveUp;
     std::pop_heap(heap.begin(), heap.end(), later);
     const auto [d, u] = heap.back();
     heap.pop_back();
@@ -171,6 +177,7 @@ bool ShortestPathFlow::augment_from(int s) {
       break;
     }
     const int64_t base = d + x.potential;
+    work_ += first_[u + 1] - first_[u];
     for (int p = first_[u]; p < first_[u + 1]; ++p) {
       const ResidualArc& a = arc_[p];
       if (a.capacity == 0) continue;
@@ -186,7 +193,7 @@ bool ShortestPathFlow::augment_from(int s) {
       }
     }
   }
-  if (t < 0) return false;
+  if (t < 0) return Search::NoDeficit;
   // Potentials: settled nodes drop by their shortfall to t's distance; with the others
   // unchanged, every residual reduced cost stays ≥ 0 and the path to t becomes tight.
   const int64_t dt = node_[t].dist;
@@ -204,76 +211,69 @@ bool ShortestPathFlow::augment_from(int s) {
   }
   excess_[s] -= delta;
   excess_[t] += delta;
-  return true;
+  return Search::Augmented;
 }
 
 int64_t ShortestPathFlow::route_on_tight_arcs() {
+  // Depth-first searches over tight arcs, one from each surplus in turn. Any tight path keeps
+  // the reduced-cost conditions, so nothing here needs to be complete: nodes whose search
+  // failed stay dead for the rest of the pass, arc pointers never go back, and a few passes
+  // leave whatever remains to the shortest-path searches.
   int64_t routed = 0;
-  std::vector<int>& level = level_;
-  std::vector<int> queue, path;
-  std::vector<int> current(n_);
+  std::vector<int> path, current(n_);
+  std::vector<char> state(n_);  // 0 unseen this pass, 1 on the path, 2 dead, 3 seen
   auto tight = [&](int u, int p) {
     const ResidualArc& a = arc_[p];
     return a.capacity > 0 && a.cost + node_[u].potential - node_[a.head].potential == 0;
   };
-  while (true) {
-    // Levels by breadth-first search from every surplus over tight residual arcs.
-    level.assign(n_, -1);
-    queue.clear();
-    for (int v = 0; v < n_; ++v)
-      if (excess_[v] > 0) {
-        level[v] = 0;
-        queue.push_back(v);
-      }
-    bool reached = false;
-    for (size_t i = 0; i < queue.size(); ++i) {
-      const int u = queue[i];
-      if (excess_[u] < 0) reached = true;
-      for (int p = first_[u]; p < first_[u + 1]; ++p)
-        if (level[arc_[p].head] < 0 && tight(u, p)) {
-          level[arc_[p].head] = level[u] + 1;
-          queue.push_back(arc_[p].head);
-        }
-    }
-    if (!reached) return routed;
-    // A blocking flow along level-increasing tight arcs, by depth-first search with a current
-    // arc per node; dead ends leave the level graph.
-    for (int v = 0; v < n_; ++v) current[v] = first_[v];
-    for (int s = 0; s < n_; ++s) {
-      if (level[s] != 0) continue;
-      path.clear();
-      int v = s;
+  for (int pass = 0; pass < kTightPasses; ++pass) {
+    int64_t routed_in_pass = 0;
+    std::fill(state.begin(), state.end(), 0);
+    for (int s = 0; s < n_ && work_ <= work_limit_; ++s) {
       while (excess_[s] > 0) {
-        if (v != s && excess_[v] < 0) {
-          int64_t delta = std::min(excess_[s], -excess_[v]);
-          for (int p : path) delta = std::min(delta, arc_[p].capacity);
-          for (int p : path) {
-            arc_[p].capacity -= delta;
-            arc_[arc_[p].reverse].capacity += delta;
+        if (state[s] == 0) current[s] = first_[s];
+        if (state[s] == 2) break;
+        state[s] = 1;
+        path.clear();
+        int v = s;
+        while (!(v != s && excess_[v] < 0)) {
+          int& p = current[v];
+          for (; p < first_[v + 1]; ++p, ++work_) {
+            const int w = arc_[p].head;
+            if (state[w] != 1 && state[w] != 2 && tight(v, p)) break;
           }
-          excess_[s] -= delta;
-          excess_[v] += delta;
-          routed += delta;
-          path.clear();
-          v = s;
-          continue;
+          if (p < first_[v + 1]) {
+            const int w = arc_[p].head;
+            if (state[w] == 0) current[w] = first_[w];
+            state[w] = 1;
+            path.push_back(p);
+            v = w;
+            continue;
+          }
+          state[v] = 2;  // dead end
+          if (path.empty()) break;
+          path.pop_back();
+          v = path.empty() ? s : arc_[path.back()].head;
+          ++current[v];
         }
-        int& p = current[v];
-        while (p < first_[v + 1] && !(level[arc_[p].head] == level[v] + 1 && tight(v, p))) ++p;
-        if (p < first_[v + 1]) {
-          path.push_back(p);
-          v = arc_[p].head;
-          continue;
+        if (v == s) break;  // s's search failed: it is dead now
+        int64_t delta = std::min(excess_[s], -excess_[v]);
+        for (int p : path) delta = std::min(delta, arc_[p].capacity);
+        for (int p : path) {
+          arc_[p].capacity -= delta;
+          arc_[arc_[p].reverse].capacity += delta;
+          state[arc_[p].head] = 3;
         }
-        level[v] = -1;  // dead end
-        if (path.empty()) break;
-        const int back = path.back();
-        path.pop_back();
-        v = tail(back);
-        ++current[v];
+        excess_[s] -= delta;
+        excess_[v] += delta;
+        routed_in_pass += delta;
       }
+      if (state[s] == 1) state[s] = 3;
     }
+    routed += routed_in_pass;
+    if (routed_in_pass == 0) break;
   }
+  return routed;
 }
 
 bool ShortestPathFlow::verify() const {

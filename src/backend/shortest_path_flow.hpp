@@ -34,6 +34,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -41,7 +42,7 @@ namespace bimdf::detail {
 
 class ShortestPathFlow {
  public:
-  enum class Status { NotRun, Optimal, Infeasible, NeedsExactFallback };
+  enum class Status { NotRun, Optimal, Infeasible, NeedsExactFallback, WorkLimitReached };
 
   // Copies the network: per arc source, target, capacity (INT64_MAX: infinite) and integer
   // cost; per node its supply. Throws std::invalid_argument on mismatched sizes, an end out
@@ -52,6 +53,14 @@ class ShortestPathFlow {
 
   // Optional, one per node in the units of the costs (default 0); see the warm start above.
   ShortestPathFlow& initial_potentials(const std::vector<int64_t>& potential);
+
+  // Optional: give up (WorkLimitReached) once the searches have scanned more than this many
+  // residual arcs, for callers that have a solver whose cost does not grow with the distance
+  // between surpluses and deficits (the network simplex). Default: no limit.
+  ShortestPathFlow& work_limit(int64_t arc_scans) {
+    work_limit_ = arc_scans;
+    return *this;
+  }
 
   // The imbalance (sum of surpluses) that run()'s start would leave with the current
   // potentials: a measure of the work ahead, O(arcs).
@@ -71,12 +80,13 @@ class ShortestPathFlow {
   int64_t tight_routed() const { return tight_routed_; }
 
  private:
-  // One search from `source` and the augmentation along the path it finds. Returns false
-  // when no node with a deficit can be reached.
-  bool augment_from(int source);
-  // Routes surplus to deficits along residual arcs of reduced cost 0 only (Dinic's blocking
-  // flows): with good potentials most of the start's imbalance sits on such arcs, and one
-  // breadth-first pass moves what would otherwise take a search per unit. Returns the amount.
+  // One search from `source` and the augmentation along the path it finds: NoDeficit when no
+  // node with a deficit can be reached, GaveUp when the work limit was passed first.
+  enum class Search { Augmented, NoDeficit, GaveUp };
+  Search augment_from(int source);
+  // Routes surplus to deficits along residual arcs of reduced cost 0 only: with good
+  // potentials most of the start's imbalance sits on such arcs, and a few depth-first passes
+  // move what would otherwise take a search per unit. Returns the amount.
   int64_t route_on_tight_arcs();
   bool verify() const;
 
@@ -110,11 +120,11 @@ class ShortestPathFlow {
   Status status_ = Status::NotRun;
   int64_t initial_imbalance_ = 0, searches_ = 0, tight_routed_ = 0;
   int search_mark_ = 0;  // 2k for the current search k
+  int64_t work_ = 0, work_limit_ = std::numeric_limits<int64_t>::max();  // residual arcs scanned
 
   // Scratch space of the searches and the tight routing.
   std::vector<int> settled_order_;
   std::vector<std::pair<int64_t, int>> heap_;
-  std::vector<int> level_;
 };
 
 }  // namespace bimdf::detail

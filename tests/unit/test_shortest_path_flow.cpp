@@ -215,6 +215,21 @@ TEST(ShortestPathFlow, InfiniteArcsCarryWhatIsNeeded) {
   EXPECT_EQ(solver.flow(), (std::vector<int64_t>{3, 3, 2}));
 }
 
+TEST(ShortestPathFlow, GivesUpAtTheWorkLimit) {
+  // A path 0 → 1 → … → 9: the unit at 0 needs a search over 9 arcs to reach node 9.
+  std::vector<int64_t> supply(10, 0);
+  supply[0] = 1;
+  supply[9] = -1;
+  std::vector<int> source, target;
+  for (int v = 0; v < 9; ++v) source.push_back(v), target.push_back(v + 1);
+  const std::vector<int64_t> capacity(9, 1), cost(9, 3);
+  ShortestPathFlow limited(supply, source, target, capacity, cost);
+  EXPECT_EQ(limited.work_limit(5).run(), ShortestPathFlow::Status::WorkLimitReached);
+  ShortestPathFlow unlimited(supply, source, target, capacity, cost);
+  ASSERT_EQ(unlimited.run(), ShortestPathFlow::Status::Optimal);
+  EXPECT_EQ(unlimited.flow(), std::vector<int64_t>(9, 1));
+}
+
 TEST(ShortestPathFlow, ProvesInfeasibility) {
   // Node 0 must send 3 units through an arc of capacity 2.
   ShortestPathFlow solver({3, -3}, {0}, {1}, {2}, {1});
