@@ -116,6 +116,10 @@ std::string human_report(const Solution& s, bool exact, bool verbose) {
     line("stage detail", stages + " (summed over components)");
     line("covers", stat_text(s, "double_covers_solved") + " solved, " + stat_text(s, "fallbacks") +
                        " components needed a fallback");
+    line("flow solves", stat_text(s, "min_cost_flows_warm") + " warm-started (" +
+                            stat_text(s, "min_cost_flows_warm_abandoned") +
+                            " of them handed to the network simplex), " +
+                            stat_text(s, "min_cost_flows_cold") + " from scratch");
     if (exact)
       line("matching", "largest " + stat_text(s, "matching_nodes_max") + " nodes, " +
                            stat_text(s, "matching_edges_max") + " edges; " +

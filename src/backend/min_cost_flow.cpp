@@ -127,10 +127,16 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2,
     case ShortestPathFlow::Status::Infeasible:
       result.status = MinCostFlowStatus::Infeasible;
       return result;
+    case ShortestPathFlow::Status::WorkLimitReached: {
+      MinCostFlowResult fallback = network_simplex(mcf, scale);
+      fallback.method = MinCostFlowMethod::WarmStartAbandoned;
+      return fallback;
+    }
     default:
       return network_simplex(mcf, scale);
   }
   result.status = MinCostFlowStatus::Optimal;
+  result.method = MinCostFlowMethod::WarmStart;
   result.cost_scale = scale;
   result.flow = solver.flow();
   result.potential = solver.potential();

@@ -20,10 +20,32 @@ namespace bimdf::detail {
 
 enum class MinCostFlowStatus { Optimal, Infeasible, Unbounded };
 
+// How a min-cost flow was solved (statistics): from scratch by the network simplex, warm from
+// the given potentials by shortest paths, or warm at first and then, past the work limit, by
+// the network simplex after all.
+enum class MinCostFlowMethod { NetworkSimplex, WarmStart, WarmStartAbandoned };
+
+// Counts of MinCostFlowMethod over a solve's min-cost flows.
+struct MinCostFlowTally {
+  int64_t cold = 0, warm = 0, warm_abandoned = 0;
+  // `warm` counts every warm start, `warm_abandoned` those that gave way.
+  void add(MinCostFlowMethod method) {
+    cold += method == MinCostFlowMethod::NetworkSimplex;
+    warm += method != MinCostFlowMethod::NetworkSimplex;
+    warm_abandoned += method == MinCostFlowMethod::WarmStartAbandoned;
+  }
+  void add(const MinCostFlowTally& t) {
+    cold += t.cold;
+    warm += t.warm;
+    warm_abandoned += t.warm_abandoned;
+  }
+};
+
 struct MinCostFlowResult {
   MinCostFlowStatus status = MinCostFlowStatus::Infeasible;
   std::vector<int64_t> flow;  // per arc, when Optimal
   double cost_scale = 1;      // the S used
+  MinCostFlowMethod method = MinCostFlowMethod::NetworkSimplex;
   // The integer problem actually solved, and its optimal dual (when Optimal), per arc:
   // scaled_cost = llround(c·S); reduced_cost = scaled_cost + π(source) − π(target) for LEMON's
   // node potentials π. Optimality (complementary slackness): flow 0 where reduced_cost > 0,

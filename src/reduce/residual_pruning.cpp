@@ -35,6 +35,7 @@ ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>&
         "residual pruning: the LP relaxation of a circulation problem with "
         "finite capacities is not optimal");
   out.potential = potentials_in_cost_units(lp);
+  out.lp_method = lp.method;
 
   // 128-bit sums: each scaled cost and reduced cost is below 3·2^60 (min_cost_flow.hpp).
   __int128 lp_value = 0, margin = 0;

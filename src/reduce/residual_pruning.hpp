@@ -29,6 +29,7 @@
 #include <span>
 #include <vector>
 
+#include "backend/min_cost_flow.hpp"
 #include "reduce/bimcf.hpp"
 
 namespace bimdf::detail {
@@ -50,6 +51,7 @@ struct ResidualPruning {
   // The LP's optimal potentials per double-cover node (v⁺ = 2v, v⁻ = 2v + 1 of the residual),
   // in units of cost: the next round's LP starts from them (min_cost_flow.hpp).
   std::vector<double> potential;
+  MinCostFlowMethod lp_method = MinCostFlowMethod::NetworkSimplex;  // how the LP was solved
 
   // A circulation of `reduced` as one of the residual (fixed arcs 0).
   std::vector<int64_t> lift(std::span<const int64_t> reduced_flow, int num_residual_arcs) const;

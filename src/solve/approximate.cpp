@@ -47,6 +47,7 @@ std::optional<std::vector<int64_t>> solve_cover(const BiMcf& bimcf, DoubleCoverK
   const DoubleCover dc = build_double_cover(bimcf, kind);
   out.mcf_arcs = dc.mcf.num_arcs();
   const MinCostFlowResult r = solve_min_cost_flow(dc.mcf, 60, start_potential);
+  out.min_cost_flows.add(r.method);
   if (r.status == MinCostFlowStatus::Infeasible) return std::nullopt;
   if (r.status == MinCostFlowStatus::Unbounded)
     // Every unbounded piece has a non-negative cost (linearize.hpp), so no negative cycle of
@@ -96,13 +97,15 @@ std::vector<int64_t> penalized_cover_flow(const Problem& p, const std::vector<in
 // potentials go to `potential` (per double-cover node, in units of cost; empty if infeasible):
 // the covers linearized around the rounded optimum start from them.
 std::vector<int64_t> relaxation_centered_guess(const Problem& p, std::vector<int64_t> guess,
-                                               int max_deviation, std::vector<double>& potential) {
+                                               int max_deviation, std::vector<double>& potential,
+                                               MinCostFlowTally& tally) {
   LinearizeOptions lp_opt;
   lp_opt.max_deviation = max_deviation;
   lp_opt.step = 2;
   const Linearization lin = linearize(p, guess, lp_opt);
   const DoubleCover dc = build_double_cover(lin.mcf, DoubleCoverKind::Relaxation);
   const MinCostFlowResult r = solve_min_cost_flow(dc.mcf);
+  tally.add(r.method);
   if (r.status != MinCostFlowStatus::Optimal) return guess;
   potential = potentials_in_cost_units(r);
   // The relaxation's directed flow is twice the Bi-MCF flow: x = g + y in halves.
@@ -150,7 +153,8 @@ ApproximateOutcome approximate(const Problem& p, const ApproximateOptions& opt) 
   std::vector<int64_t> guess(p.num_edges());
   for (int e = 0; e < p.num_edges(); ++e) guess[e] = p.cost[e].argmin(p.lower[e], p.upper[e]);
   std::vector<double> lp_potential;
-  guess = relaxation_centered_guess(p, std::move(guess), opt.max_deviation, lp_potential);
+  guess = relaxation_centered_guess(p, std::move(guess), opt.max_deviation, lp_potential,
+                                    out.min_cost_flows);
   out.time_lp_guess_s = clock.lap();
 
   LinearizeOptions lin_opt;

@@ -29,6 +29,7 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
     approx.potential = simplified.project_unchained_potential(approx.potential);
   }
   r.path = approx.path;
+  r.min_cost_flows = approx.min_cost_flows;
   r.attempts = approx.attempts;
   r.time_lp_guess_s = approx.time_lp_guess_s;
   r.time_parity_s = approx.time_parity_s;
@@ -54,6 +55,7 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
     r.matching_edges = refined.matching_edges;
     r.matching_free_vertices = refined.matching_free_vertices;
     r.lemon_fallbacks = refined.lemon_fallbacks;
+    r.min_cost_flows.add(refined.lps);
     r.time_refine_build_s = refined.time_build_s;
     r.time_matching_s = refined.time_matching_s;
     if (refined.converged) r.status = SolveStatus::Optimal;

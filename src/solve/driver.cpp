@@ -104,6 +104,7 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
   int64_t attempts = 0, nodes_solved = 0, edges_solved = 0, rounds = 0, rounds_max = 0,
           matchings = 0;
   int64_t matching_nodes = 0, matching_edges = 0, matching_free_vertices = 0, lemon_fallbacks = 0;
+  MinCostFlowTally min_cost_flows;
   double approximate_objective = 0, lower_bound = 0;
   double t_simplify = 0, t_lp_guess = 0, t_parity = 0, t_linearize = 0, t_mcf = 0, t_build = 0,
          t_pruning = 0, t_matching = 0, t_bound = 0;
@@ -121,6 +122,7 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
     matching_edges = std::max(matching_edges, c.matching_edges);
     matching_free_vertices += c.matching_free_vertices;
     lemon_fallbacks += c.lemon_fallbacks;
+    min_cost_flows.add(c.min_cost_flows);
     t_simplify += c.time_simplify_s;
     t_lp_guess += c.time_lp_guess_s;
     t_parity += c.time_parity_s;
@@ -166,6 +168,9 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
   }
   stats["approximation_path"] = path_text;
   stats["fallbacks"] = fallbacks;
+  stats["min_cost_flows_cold"] = min_cost_flows.cold;
+  stats["min_cost_flows_warm"] = min_cost_flows.warm;
+  stats["min_cost_flows_warm_abandoned"] = min_cost_flows.warm_abandoned;
   if (cc.exact) {
     stats["refinement_rounds"] = rounds;
     stats["refinement_rounds_max"] = rounds_max;

@@ -94,6 +94,7 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     t = std::chrono::steady_clock::now();
     ResidualPruning pruned = prune_residual(lin.mcf, lp_potential);
     lp_potential = std::move(pruned.potential);
+    r.lps.add(pruned.lp_method);
     r.time_pruning_s += seconds_since(t);
     ++r.rounds;
     if (pruned.proves_optimal) {

@@ -16,6 +16,7 @@
 #include <limits>
 #include <vector>
 
+#include "backend/min_cost_flow.hpp"
 #include "bimdf/problem.hpp"
 #include "bimdf/solve.hpp"
 
@@ -37,6 +38,7 @@ struct RefineResult {
   int64_t matching_nodes = 0, matching_edges = 0;  // of the largest round
   int64_t matching_free_vertices = 0;  // vertices the warm start left free, summed over rounds
   int64_t lemon_fallbacks = 0;  // rounds our solver left to LEMON (weights too large, or a bug)
+  MinCostFlowTally lps;         // how the rounds' LPs were solved
 };
 
 // Requires a problem without outer edges and a flow feasible for it. Throws std::logic_error if

@@ -300,6 +300,7 @@ TEST(ExactShared, EveryInstanceReachesItsRecordedOptimum) {
   std::string line;
   std::getline(tsv, line);
   int count = 0;
+  int64_t warm_finished = 0;
   while (std::getline(tsv, line)) {
     std::istringstream row(line);
     std::string file;
@@ -317,9 +318,15 @@ TEST(ExactShared, EveryInstanceReachesItsRecordedOptimum) {
     EXPECT_LE(std::get<double>(s.stats.at("lower_bound")), s.objective + 1e-9) << file;
     // Every matching by our blossom solver, none left to LEMON.
     EXPECT_EQ(std::get<int64_t>(s.stats.at("matching_lemon_fallbacks")), 0) << file;
+    // Every instance's cover starts from the LP guess's potentials (whether or not it then
+    // gives way to the network simplex).
+    EXPECT_GE(std::get<int64_t>(s.stats.at("min_cost_flows_warm")), 1) << file;
+    warm_finished += std::get<int64_t>(s.stats.at("min_cost_flows_warm")) -
+                     std::get<int64_t>(s.stats.at("min_cost_flows_warm_abandoned"));
     ++count;
   }
   EXPECT_GE(count, 60);
+  EXPECT_GE(warm_finished, 2 * count);  // the warm starts do the work on these instances
 }
 
 }  // namespace
