@@ -1,4 +1,5 @@
-// LEMON adapter for min_cost_flow.hpp. Compiled as C++17 (Debian's LEMON 1.3.1 headers do not
+// min_cost_flow.hpp: LEMON's network simplex for cold starts, shortest_path_flow.hpp for warm
+// ones. Compiled as C++17 (Debian's LEMON 1.3.1 headers do not
 // compile as C++20, DESIGN §6); no LEMON type leaves this file.
 #include "backend/min_cost_flow.hpp"
 
@@ -108,32 +109,37 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2,
   }
   const double scale = integer_cost_scale(mcf.cost, n, std::min(limit_log2, 60));
   if (static_cast<int>(start_potential.size()) != n) return network_simplex(mcf, scale);
+  // Started, but the network simplex answers: the start was too far off, or the solver could
+  // not decide (see shortest_path_flow.hpp).
+  auto abandoned = [&] {
+    MinCostFlowResult fallback = network_simplex(mcf, scale);
+    fallback.method = MinCostFlowMethod::WarmStartAbandoned;
+    return fallback;
+  };
   std::vector<int64_t> cost(m);
   for (int a = 0; a < m; ++a) cost[a] = std::llround(mcf.cost[a] * scale);
+  // Potentials matter only up to a common shift: centred on their largest, so that a chain of
+  // solves, whose potentials only ever decrease, never drifts out of the solver's bounds.
+  const double top = *std::max_element(start_potential.begin(), start_potential.end());
   std::vector<int64_t> start(n);
   for (int v = 0; v < n; ++v) {
-    const double p = start_potential[v] * scale;
-    start[v] = std::fabs(p) < 0x1p59 ? std::llround(p) : 0;
+    const double p = (start_potential[v] - top) * scale;
+    start[v] = std::llround(std::clamp(p, -0x1p62, 0x1p62));  // beyond ±2^60: refused
   }
   ShortestPathFlow solver(mcf.supply, mcf.source, mcf.target, mcf.capacity, cost);
   solver.initial_potentials(start).work_limit(kWorkLimitPerArc * static_cast<int64_t>(m));
   // Shortest paths pay per unit of imbalance the start leaves, the network simplex per arc:
   // on the refinement LPs and covers of the shared instances the crossover lies between 0.05
   // and 0.2 units per node (docs/benchmarks.md).
-  if (solver.start_imbalance() * kWarmStartNodesPerUnit > n) return network_simplex(mcf, scale);
+  if (solver.start_imbalance() > n / kWarmStartNodesPerUnit) return abandoned();
   switch (solver.run()) {
     case ShortestPathFlow::Status::Optimal:
       break;
     case ShortestPathFlow::Status::Infeasible:
       result.status = MinCostFlowStatus::Infeasible;
       return result;
-    case ShortestPathFlow::Status::WorkLimitReached: {
-      MinCostFlowResult fallback = network_simplex(mcf, scale);
-      fallback.method = MinCostFlowMethod::WarmStartAbandoned;
-      return fallback;
-    }
     default:
-      return network_simplex(mcf, scale);
+      return abandoned();
   }
   result.status = MinCostFlowStatus::Optimal;
   result.method = MinCostFlowMethod::WarmStart;

@@ -1,5 +1,8 @@
-// Minimum-cost flow on a directed network (reduce/directed_mcf.hpp), solved by LEMON's
-// network simplex. This header is LEMON-free so that C++20 code can include it (DESIGN §6).
+// Minimum-cost flow on a directed network (reduce/directed_mcf.hpp): from scratch by LEMON's
+// network simplex, or, given the potentials of a similar problem solved before, by our
+// shortest-path solver started from them (backend/shortest_path_flow.hpp), which gives way to
+// the network simplex when the start is too far off. This header is LEMON-free so that C++20
+// code can include it (DESIGN §6).
 //
 // Integer cost scaling — the one place where bimdf turns double costs into the integers a
 // combinatorial solver needs (DESIGN §2): every per-unit cost c becomes llround(c·S) with
@@ -20,15 +23,15 @@ namespace bimdf::detail {
 
 enum class MinCostFlowStatus { Optimal, Infeasible, Unbounded };
 
-// How a min-cost flow was solved (statistics): from scratch by the network simplex, warm from
-// the given potentials by shortest paths, or warm at first and then, past the work limit, by
-// the network simplex after all.
+// How a min-cost flow was solved (statistics): from scratch by the network simplex (no start
+// given), from the given potentials by shortest paths, or by the network simplex although a
+// start was given (too far off, past the work limit, or undecided by the shortest paths).
 enum class MinCostFlowMethod { NetworkSimplex, WarmStart, WarmStartAbandoned };
 
 // Counts of MinCostFlowMethod over a solve's min-cost flows.
 struct MinCostFlowTally {
   int64_t cold = 0, warm = 0, warm_abandoned = 0;
-  // `warm` counts every warm start, `warm_abandoned` those that gave way.
+  // `warm` counts every solve given a start, `warm_abandoned` those the network simplex did.
   void add(MinCostFlowMethod method) {
     cold += method == MinCostFlowMethod::NetworkSimplex;
     warm += method != MinCostFlowMethod::NetworkSimplex;
@@ -47,9 +50,9 @@ struct MinCostFlowResult {
   double cost_scale = 1;      // the S used
   MinCostFlowMethod method = MinCostFlowMethod::NetworkSimplex;
   // The integer problem actually solved, and its optimal dual (when Optimal), per arc:
-  // scaled_cost = llround(c·S); reduced_cost = scaled_cost + π(source) − π(target) for LEMON's
-  // node potentials π. Optimality (complementary slackness): flow 0 where reduced_cost > 0,
-  // flow = capacity where reduced_cost < 0. |reduced_cost| < 3·2^60, see the scale above.
+  // scaled_cost = llround(c·S); reduced_cost = scaled_cost + π(source) − π(target) for the
+  // solver's node potentials π. Optimality (complementary slackness): flow 0 where reduced_cost >
+  // 0, flow = capacity where reduced_cost < 0. |reduced_cost| < 3·2^60, see the scale above.
   std::vector<int64_t> scaled_cost;
   std::vector<int64_t> reduced_cost;
   std::vector<int64_t> potential;  // π per node, when Optimal

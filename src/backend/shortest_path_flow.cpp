@@ -12,9 +12,10 @@ namespace bimdf::detail {
 namespace {
 
 constexpr int kTightPasses = 3;
+constexpr int kRepairPasses = 4;
 constexpr int64_t kInf = std::numeric_limits<int64_t>::max();
-// Potentials stay below 2^61 in magnitude, costs below 2^60: reduced costs and distances
-// (path costs plus two potentials) then stay below 2^63.
+// Potentials stay below 2^61 in magnitude and costs below 2^60/(n + 1): reduced costs and
+// distances (path costs plus two potentials) then stay below 2^63.
 constexpr int64_t kPotentialBound = int64_t{1} << 61;
 
 }  // namespace
@@ -41,7 +42,14 @@ ShortestPathFlow::ShortestPathFlow(const std::vector<int64_t>& supply,
     if (capacity[a] != kInf) cap_sum += capacity[a];
     if (cost[a] > cost_limit || -static_cast<__int128>(cost[a]) > cost_limit) unsupported_ = true;
   }
-  for (int64_t s : supply_) supply_sum += s > 0 ? s : 0;
+  __int128 total = 0;
+  for (int64_t s : supply_) {
+    supply_sum += s > 0 ? s : 0;
+    total += s;
+  }
+  // Supplies that do not sum to 0 leave either surplus or deficit behind however the flow runs:
+  // the exact fallback says which answer that is in its conventions.
+  if (total != 0) unsupported_ = true;
   const __int128 b = cap_sum + supply_sum;
   if (b >= (__int128{1} << 62)) unsupported_ = true;
   cap_b_ = unsupported_ ? 0 : static_cast<int64_t>(b);
@@ -77,6 +85,23 @@ ShortestPathFlow& ShortestPathFlow::initial_potentials(const std::vector<int64_t
     return p <= kPotentialBound / 2 && p >= -kPotentialBound / 2;
   });
   for (int v = 0; v < n_; ++v) node_[v].potential = usable ? potential[v] : 0;
+  // An arc of infinite capacity priced negative would be saturated at B (a huge imbalance, all
+  // the solver's work). A few Bellman–Ford passes over those arcs lower their heads' potentials
+  // until they price them at 0 — potentials of a nearby problem are usually off by little.
+  for (int pass = 0; pass < kRepairPasses; ++pass) {
+    bool changed = false;
+    for (int a = 0; a < m_; ++a) {
+      if (!capped_[a]) continue;
+      const ResidualArc& forward = arc_[pos_[2 * a]];
+      const int64_t lowered = node_[arc_[forward.reverse].head].potential + forward.cost;
+      int64_t& head = node_[forward.head].potential;
+      if (lowered < head && lowered >= -kPotentialBound / 2) {
+        head = lowered;
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
   return *this;
 }
 
@@ -87,6 +112,7 @@ std::vector<int64_t> ShortestPathFlow::potential() const {
 }
 
 int64_t ShortestPathFlow::start_imbalance() const {
+  if (unsupported_) return std::numeric_limits<int64_t>::max();
   std::vector<int64_t> excess = supply_;
   for (int a = 0; a < m_; ++a) {
     const ResidualArc& forward = arc_[pos_[2 * a]];
@@ -97,14 +123,18 @@ int64_t ShortestPathFlow::start_imbalance() const {
       excess[w] += full;
     }
   }
-  int64_t sum = 0;
+  __int128 sum = 0;
   for (int64_t e : excess) sum += std::max<int64_t>(e, 0);
-  return sum;
+  return static_cast<int64_t>(std::min<__int128>(sum, std::numeric_limits<int64_t>::max()));
 }
 
 ShortestPathFlow::Status ShortestPathFlow::run() {
   status_ = Status::NotRun;
   if (unsupported_) return status_ = Status::NeedsExactFallback;
+  // A previous run may have left potentials beyond the bounds.
+  for (const NodeState& x : node_)
+    if (x.potential > kPotentialBound / 2 || x.potential < -kPotentialBound / 2)
+      return status_ = Status::NeedsExactFallback;
   // Start: saturate every arc priced negative, so that no residual arc is. Capacities are
   // reset here too, so that run() may be called again.
   excess_ = supply_;
@@ -125,6 +155,7 @@ ShortestPathFlow::Status ShortestPathFlow::run() {
   searches_ = 0;
   work_ = 0;
   tight_routed_ = route_on_tight_arcs();
+  if (work_ > work_limit_) return status_ = Status::WorkLimitReached;
   for (int v = 0; v < n_; ++v)
     while (excess_[v] > 0) {
       const Search search = augment_from(v);
@@ -230,7 +261,7 @@ int64_t ShortestPathFlow::route_on_tight_arcs() {
     int64_t routed_in_pass = 0;
     std::fill(state.begin(), state.end(), 0);
     for (int s = 0; s < n_ && work_ <= work_limit_; ++s) {
-      while (excess_[s] > 0) {
+      while (excess_[s] > 0 && work_ <= work_limit_) {
         if (state[s] == 0) current[s] = first_[s];
         if (state[s] == 2) break;
         state[s] = 1;
@@ -238,7 +269,8 @@ int64_t ShortestPathFlow::route_on_tight_arcs() {
         int v = s;
         while (!(v != s && excess_[v] < 0)) {
           int& p = current[v];
-          for (; p < first_[v + 1]; ++p, ++work_) {
+          for (; p < first_[v + 1]; ++p) {
+            ++work_;
             const int w = arc_[p].head;
             if (state[w] != 1 && state[w] != 2 && tight(v, p)) break;
           }
@@ -267,6 +299,7 @@ int64_t ShortestPathFlow::route_on_tight_arcs() {
         excess_[s] -= delta;
         excess_[v] += delta;
         routed_in_pass += delta;
+        work_ += static_cast<int64_t>(path.size());
       }
       if (state[s] == 1) state[s] = 3;
     }

@@ -21,12 +21,15 @@
 //
 // Infinite capacities: an arc of infinite capacity is given a finite one, B = the sum of the
 // finite capacities and positive supplies plus 1, which no optimal flow of a problem with an
-// optimum needs to reach (flow decomposition). If an optimal flow of the capped problem uses
-// some such arc up to B, or a search that proves infeasibility meets one that is full, the
-// answer would depend on the cap, and the solver reports NeedsExactFallback: the caller then
-// asks a solver that decides unboundedness (backend/min_cost_flow.cpp uses LEMON's network
-// simplex). The same status comes back when costs or potentials exceed the overflow bounds:
-// |cost|·(n + 1) and |potential| below 2^60.
+// optimum needs to reach (flow decomposition). If the capped problem's optimal flow uses some
+// such arc up to B, or a search finds no deficit while any such arc is full, the answer would
+// depend on the cap, and the solver reports NeedsExactFallback: the caller then asks a solver
+// that decides unboundedness (backend/min_cost_flow.cpp uses LEMON's network simplex). The same
+// status comes back when the costs exceed the overflow bound |cost|·(n + 1) < 2^60, when the
+// supplies do not sum to 0, or when a run drives a potential below −2^61; initial potentials
+// beyond ±2^60 are replaced by 0. Initial potentials that price such an arc negative are first
+// repaired by a few Bellman–Ford passes over these arcs (lowering their heads' potentials), so
+// that the start does not saturate them at B.
 //
 // Guarantee: Optimal is returned only after a check of the result — every arc within its
 // bounds, every node balanced, and no arc with residual capacity priced negative — so the flow

@@ -62,7 +62,8 @@ std::optional<std::vector<int64_t>> solve_cover(const BiMcf& bimcf, DoubleCoverK
 // even. Returns g + the pieces' flow: a pseudo-flow within bounds whose remaining imbalance —
 // twice the artificial flow — is usually zero or small.
 std::vector<int64_t> penalized_cover_flow(const Problem& p, const std::vector<int64_t>& guess,
-                                          const LinearizeOptions& lin_opt) {
+                                          const LinearizeOptions& lin_opt,
+                                          MinCostFlowTally& tally) {
   const Linearization lin = linearize(p, guess, lin_opt);
   BiMcf mcf = lin.mcf;
   double max_cost = 1;
@@ -78,6 +79,7 @@ std::vector<int64_t> penalized_cover_flow(const Problem& p, const std::vector<in
     }
   const DoubleCover dc = build_double_cover(mcf, DoubleCoverKind::Asymmetric);
   const MinCostFlowResult r = solve_min_cost_flow(dc.mcf);
+  tally.add(r.method);
   if (r.status != MinCostFlowStatus::Optimal)
     throw SolverError("internal error: the penalized double cover has no optimal flow");
   std::vector<int64_t> y = dc.lift(r.flow, mcf.num_arcs());
@@ -194,7 +196,8 @@ ApproximateOutcome approximate(const Problem& p, const ApproximateOptions& opt) 
   // Last resort, exact either way: phase 1 (phase_one.hpp) refined to its optimum, started
   // from the penalized cover's flow so that little artificial flow is left to remove.
   const ParityRepair repaired = repair_parity(p, guess, opt.parity);
-  const std::vector<int64_t> start = penalized_cover_flow(p, repaired.guess, lin_opt);
+  const std::vector<int64_t> start =
+      penalized_cover_flow(p, repaired.guess, lin_opt, out.min_cost_flows);
   if (conserves(p, start)) {
     out.flow = start;
     out.status = SolveStatus::Feasible;

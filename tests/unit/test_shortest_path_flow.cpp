@@ -180,22 +180,48 @@ TEST(ShortestPathFlow, WarmStartedMinCostFlowAgreesWithNetworkSimplex) {
   // solve_min_cost_flow with a start takes the shortest-path solver when the start is good
   // and the network simplex otherwise; either way the optimum is the cold one's.
   std::mt19937 rng(13);
+  bimdf::detail::MinCostFlowTally methods;
+  int skipped = 0;
   for (int trial = 0; trial < 100; ++trial) {
     const int n = 50 + trial;
     const Network g = random_network(rng, n, 4 * n, 4, 100, 0.05);
     DirectedMcf mcf{g.supply, g.source, g.target, g.capacity, {}};
     for (int64_t c : g.cost) mcf.cost.push_back(c / 7.0);
     const auto cold = bimdf::detail::solve_min_cost_flow(mcf);
-    if (cold.status != MinCostFlowStatus::Optimal) continue;
+    if (cold.status != MinCostFlowStatus::Optimal) {
+      ++skipped;
+      continue;
+    }
+    // Near the optimum's potentials or far from them.
     std::vector<double> start = bimdf::detail::potentials_in_cost_units(cold);
-    for (double& p : start) p += std::uniform_real_distribution<double>(-0.5, 0.5)(rng);
+    const double noise = trial % 2 ? 0.001 : 5;
+    for (double& p : start) p += std::uniform_real_distribution<double>(-noise, noise)(rng);
     const auto warm = bimdf::detail::solve_min_cost_flow(mcf, 60, start);
     ASSERT_EQ(warm.status, MinCostFlowStatus::Optimal) << "trial " << trial;
+    methods.add(warm.method);
     Network scaled = g;
     scaled.cost = warm.scaled_cost;
     EXPECT_EQ(cost_of(scaled, warm.flow), cost_of(scaled, cold.flow)) << "trial " << trial;
     expect_optimal(scaled, warm.flow, warm.potential);
   }
+  // Every solve was given a start. On random networks the optimum has many tight arcs that
+  // carry part of their capacity, which a start leaves empty: too much imbalance for the
+  // shortest paths, so the network simplex answers (the shared instances take the shortest
+  // paths: ExactShared; a start they take below).
+  EXPECT_EQ(methods.cold, 0);
+  EXPECT_EQ(methods.warm, 100 - skipped);
+}
+
+TEST(ShortestPathFlow, AGoodStartIsFinishedByShortestPaths) {
+  // 0 → 1 → 2, one unit, both arcs full at the optimum; potentials that price both at −1 leave
+  // no imbalance once they are saturated.
+  DirectedMcf mcf{{1, 0, -1}, {0, 1}, {1, 2}, {1, 1}, {1.0, 1.0}};
+  const auto warm = bimdf::detail::solve_min_cost_flow(mcf, 60, {0.0, 2.0, 4.0});
+  ASSERT_EQ(warm.status, MinCostFlowStatus::Optimal);
+  EXPECT_EQ(warm.method, bimdf::detail::MinCostFlowMethod::WarmStart);
+  EXPECT_EQ(warm.flow, (std::vector<int64_t>{1, 1}));
+  const auto cold = bimdf::detail::solve_min_cost_flow(mcf);
+  EXPECT_EQ(cold.method, bimdf::detail::MinCostFlowMethod::NetworkSimplex);
 }
 
 TEST(ShortestPathFlow, NegativeCycleOfInfiniteArcsIsLeftToTheExactFallback) {
@@ -228,6 +254,11 @@ TEST(ShortestPathFlow, GivesUpAtTheWorkLimit) {
   ShortestPathFlow unlimited(supply, source, target, capacity, cost);
   ASSERT_EQ(unlimited.run(), ShortestPathFlow::Status::Optimal);
   EXPECT_EQ(unlimited.flow(), std::vector<int64_t>(9, 1));
+}
+
+TEST(ShortestPathFlow, SuppliesThatDoNotCancelAreLeftToTheExactFallback) {
+  ShortestPathFlow solver({2, -1}, {0}, {1}, {5}, {1});
+  EXPECT_EQ(solver.run(), ShortestPathFlow::Status::NeedsExactFallback);
 }
 
 TEST(ShortestPathFlow, ProvesInfeasibility) {
