@@ -117,15 +117,25 @@ int64_t ShortestPathFlow::start_imbalance() const {
   for (int a = 0; a < m_; ++a) {
     const ResidualArc& forward = arc_[pos_[2 * a]];
     const int v = arc_[forward.reverse].head, w = forward.head;
-    if (forward.cost + node_[v].potential - node_[w].potential < 0) {
+    if (reduced_cost(v, pos_[2 * a]) < 0) {
       const int64_t full = forward.capacity + arc_[forward.reverse].capacity;
       excess[v] -= full;
       excess[w] += full;
     }
   }
+  return surplus(excess);
+}
+
+int64_t ShortestPathFlow::surplus(const std::vector<int64_t>& excess) {
   __int128 sum = 0;
   for (int64_t e : excess) sum += std::max<int64_t>(e, 0);
   return static_cast<int64_t>(std::min<__int128>(sum, std::numeric_limits<int64_t>::max()));
+}
+
+bool ShortestPathFlow::capped_arc_full() const {
+  for (int a = 0; a < m_; ++a)
+    if (capped_[a] && arc_[pos_[2 * a]].capacity == 0) return true;
+  return false;
 }
 
 ShortestPathFlow::Status ShortestPathFlow::run() {
@@ -144,14 +154,13 @@ ShortestPathFlow::Status ShortestPathFlow::run() {
     const int v = backward.head, w = forward.head;
     forward.capacity += backward.capacity;
     backward.capacity = 0;
-    if (forward.cost + node_[v].potential - node_[w].potential < 0) {
+    if (reduced_cost(v, pos_[2 * a]) < 0) {
       std::swap(forward.capacity, backward.capacity);
       excess_[v] -= backward.capacity;
       excess_[w] += backward.capacity;
     }
   }
-  initial_imbalance_ = 0;
-  for (int64_t e : excess_) initial_imbalance_ += std::max<int64_t>(e, 0);
+  initial_imbalance_ = surplus(excess_);
   searches_ = 0;
   work_ = 0;
   tight_routed_ = route_on_tight_arcs();
@@ -163,15 +172,11 @@ ShortestPathFlow::Status ShortestPathFlow::run() {
       if (search == Search::NoDeficit) {
         // No deficit reachable: the nodes reached have more supply than can leave them —
         // unless a capped arc is full, whose true capacity would let more out.
-        for (int a = 0; a < m_; ++a)
-          if (capped_[a] && arc_[pos_[2 * a]].capacity == 0)
-            return status_ = Status::NeedsExactFallback;
-        return status_ = Status::Infeasible;
+        return status_ = capped_arc_full() ? Status::NeedsExactFallback : Status::Infeasible;
       }
       if (status_ == Status::NeedsExactFallback) return status_;
     }
-  for (int a = 0; a < m_; ++a)
-    if (capped_[a] && arc_[pos_[2 * a]].capacity == 0) return status_ = Status::NeedsExactFallback;
+  if (capped_arc_full()) return status_ = Status::NeedsExactFallback;
   if (!verify()) throw std::logic_error("shortest path flow: the optimality check failed");
   return status_ = Status::Optimal;
 }
@@ -253,10 +258,7 @@ int64_t ShortestPathFlow::route_on_tight_arcs() {
   int64_t routed = 0;
   std::vector<int> path, current(n_);
   std::vector<char> state(n_);  // 0 unseen this pass, 1 on the path, 2 dead, 3 seen
-  auto tight = [&](int u, int p) {
-    const ResidualArc& a = arc_[p];
-    return a.capacity > 0 && a.cost + node_[u].potential - node_[a.head].potential == 0;
-  };
+  auto tight = [&](int u, int p) { return arc_[p].capacity > 0 && reduced_cost(u, p) == 0; };
   for (int pass = 0; pass < kTightPasses; ++pass) {
     int64_t routed_in_pass = 0;
     std::fill(state.begin(), state.end(), 0);
@@ -316,7 +318,7 @@ bool ShortestPathFlow::verify() const {
     const ResidualArc& backward = arc_[forward.reverse];
     const int v = backward.head, w = forward.head;
     if (forward.capacity < 0 || backward.capacity < 0) return false;
-    const int64_t reduced = forward.cost + node_[v].potential - node_[w].potential;
+    const int64_t reduced = reduced_cost(v, pos_[2 * a]);
     if ((forward.capacity > 0 && reduced < 0) || (backward.capacity > 0 && reduced > 0))
       return false;
     balance[v] += backward.capacity;  // the flow

@@ -106,6 +106,15 @@ class ShortestPathFlow {
   std::vector<int> first_, pos_;
   std::vector<ResidualArc> arc_;
   int tail(int position) const { return arc_[arc_[position].reverse].head; }
+  // The reduced cost of the half-arc at `position`, whose tail is `from`.
+  int64_t reduced_cost(int from, int position) const {
+    return arc_[position].cost + node_[from].potential - node_[arc_[position].head].potential;
+  }
+  // Whether an arc whose infinite capacity was capped at B is full (then the answer may depend
+  // on the cap).
+  bool capped_arc_full() const;
+  // The sum of the positive entries, saturated at INT64_MAX.
+  static int64_t surplus(const std::vector<int64_t>& excess);
   // Per node, what a search reads of it in one record. `mark` says what `dist` and `pred`
   // mean: 2k while search k has reached the node, 2k + 1 once it settled it; older values are
   // stale, so searches need no reset.
