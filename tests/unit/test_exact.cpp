@@ -157,11 +157,8 @@ TEST(ExactRandom, RelaxationLowerBoundNeverExceedsTheOptimum) {
 
 TEST(ExactRandom, ThreeHundredMediumInstancesMatchTheMilp) {
   std::mt19937_64 rng(12);
-  testing::RandomProblemOptions opt;
-  opt.min_nodes = 15;
-  opt.max_nodes = 60;
-  opt.min_edges = 30;
-  opt.max_edges = 200;
+  const testing::RandomProblemOptions opt{
+      .min_nodes = 15, .max_nodes = 60, .min_edges = 30, .max_edges = 200};
   Tally t;
   int64_t edges = 0;
   for (int i = 0; i < testing::scaled(300); ++i) {
@@ -182,11 +179,9 @@ TEST(ExactRandom, ThreeHundredMediumInstancesMatchTheMilp) {
 
 TEST(Exact, ResultDoesNotDependOnTheThreadCount) {
   std::mt19937_64 rng(13);
-  testing::RandomProblemOptions opt;
-  opt.min_nodes = 30;
-  opt.max_nodes = 60;
-  opt.min_edges = 20;
-  opt.max_edges = 40;  // sparse: many components
+  // Sparse: many components.
+  const testing::RandomProblemOptions opt{
+      .min_nodes = 30, .max_nodes = 60, .min_edges = 20, .max_edges = 40};
   int compared = 0;
   for (int i = 0; i < 50; ++i) {
     Problem p = testing::random_problem(rng, opt);
@@ -206,11 +201,8 @@ TEST(Exact, ResultDoesNotDependOnTheThreadCount) {
 // different starts, the same optimum.
 TEST(Exact, ApproximatingBeforeOrAfterChainCollapseReachesTheSameOptimum) {
   std::mt19937_64 rng(17);
-  testing::RandomProblemOptions opt;
-  opt.min_nodes = 20;
-  opt.max_nodes = 60;
-  opt.min_edges = 30;
-  opt.max_edges = 90;
+  const testing::RandomProblemOptions opt{
+      .min_nodes = 20, .max_nodes = 60, .min_edges = 30, .max_edges = 90};
   int optimal = 0;
   for (int i = 0; i < testing::scaled(200); ++i) {
     Problem p = testing::random_problem(rng, opt);
@@ -233,12 +225,8 @@ TEST(Exact, ApproximatingBeforeOrAfterChainCollapseReachesTheSameOptimum) {
 // without any.
 TEST(Exact, RefinementFromAnyStartingPotentialsReachesTheOptimum) {
   std::mt19937_64 rng(19);
-  testing::RandomProblemOptions opt;
-  opt.min_nodes = 10;
-  opt.max_nodes = 40;
-  opt.min_edges = 15;
-  opt.max_edges = 80;
-  opt.outer_edges = false;
+  const testing::RandomProblemOptions opt{
+      .min_nodes = 10, .max_nodes = 40, .min_edges = 15, .max_edges = 80, .outer_edges = false};
   int compared = 0;
   for (int i = 0; i < testing::scaled(100); ++i) {
     Problem p = testing::random_problem(rng, opt);
