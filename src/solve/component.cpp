@@ -38,8 +38,7 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   if (approx.status == SolveStatus::Infeasible) {
     r.proof = approx.proof;
     if (r.proof.kind == InfeasibilityProof::Kind::OddParity)
-      r.proof.node = unchained ? (r.proof.node < component.num_nodes() ? r.proof.node : -1)
-                               : simplified.component_node(r.proof.node);
+      r.proof.node = simplified.component_node(r.proof.node, unchained);
     return r;
   }
   r.approximate_objective = objective(component, simplified.lift(approx.flow));

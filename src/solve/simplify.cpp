@@ -19,13 +19,13 @@ std::vector<int64_t> SimplifiedComponent::lift(std::vector<int64_t> flow) const 
   return fixed_.lift(outer_.lift(flow));
 }
 
-int SimplifiedComponent::component_node(int node) const {
-  int unchained = node;  // fixed- and outer-edge elimination keep the component's node ids
-  if (chains_) {
+int SimplifiedComponent::component_node(int node, bool unchained) const {
+  // Fixed- and outer-edge elimination keep the component's node ids (and add the boundary).
+  if (chains_ && !unchained) {
     const auto& of = chains_->reduced_node;
-    unchained = static_cast<int>(std::find(of.begin(), of.end(), node) - of.begin());
+    node = static_cast<int>(std::find(of.begin(), of.end(), node) - of.begin());
   }
-  return unchained < component_nodes_ ? unchained : -1;
+  return node < component_nodes_ ? node : -1;
 }
 
 std::vector<int64_t> SimplifiedComponent::project_unchained(

@@ -33,9 +33,9 @@ class SimplifiedComponent {
   // Double-cover potentials (v⁺ = 2v, v⁻ = 2v + 1) of the unchained problem's nodes → those of
   // problem()'s nodes, which are the unchained nodes that are not pass-through.
   std::vector<double> project_unchained_potential(const std::vector<double>& potential) const;
-  // The component's id of a node of problem(), or −1 for the boundary node that carries the
-  // outer edges (outer_edges.hpp). Node ids of the unchained problem are the component's.
-  int component_node(int node) const;
+  // The component's id of a node of problem() (of unchained_problem() when `unchained`), or −1
+  // for the boundary node that carries the outer edges (outer_edges.hpp).
+  int component_node(int node, bool unchained = false) const;
   // A flow of problem() → a flow of the component.
   std::vector<int64_t> lift(std::vector<int64_t> flow) const;
 

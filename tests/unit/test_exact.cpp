@@ -262,6 +262,10 @@ TEST(Exact, SimplifiedNodesMapBackToTheComponent) {
   for (int v = 0; v < simplified.problem().num_nodes(); ++v)
     back.push_back(simplified.component_node(v));
   EXPECT_EQ(back, (std::vector<int>{1, 2, 3, -1}));
+  std::vector<int> unchained_back;
+  for (int v = 0; v < simplified.unchained_problem().num_nodes(); ++v)
+    unchained_back.push_back(simplified.component_node(v, true));
+  EXPECT_EQ(unchained_back, (std::vector<int>{0, 1, 2, 3, -1}));
 }
 
 TEST(Exact, LimitsReturnTheBestFlowAsFeasible) {
