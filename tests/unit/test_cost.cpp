@@ -119,6 +119,50 @@ TEST(Cost, ArgminWithInfiniteBounds) {
   EXPECT_EQ(Cost::scale_factor(6, 1, 0.1).argmin(0, kInfinity), 6);
 }
 
+// The search starts at the anchor and gallops outwards (cost.cpp); here the minimizer lies far
+// from it (sums whose anchor is the mean of distant targets) and the bounds are wide or
+// infinite. A convex function's local minimum is global, so checking the neighbours suffices.
+TEST(Cost, ArgminFarFromTheAnchorOverWideBounds) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> target(-1e9, 1e9), weight(0.001, 10);
+  for (int i = 0; i < 5000; ++i) {
+    std::vector<Cost> terms;
+    const int k = 1 + static_cast<int>(rng() % 4);
+    for (int j = 0; j < k; ++j) {
+      switch (rng() % 3) {
+        case 0:
+          terms.push_back(Cost::abs_deviation(target(rng), weight(rng)));
+          break;
+        case 1:
+          terms.push_back(Cost::quad_deviation(target(rng), weight(rng)));
+          break;
+        default:
+          terms.push_back(Cost::asym_abs_deviation(target(rng), weight(rng), weight(rng)));
+      }
+    }
+    const Cost c = k == 1 ? terms[0] : Cost::sum(terms);
+    int64_t lo = rng() % 2 ? -kInfinity : static_cast<int64_t>(target(rng));
+    int64_t up = rng() % 2 ? kInfinity : static_cast<int64_t>(target(rng));
+    if (lo > up) std::swap(lo, up);
+    const int64_t got = c.argmin(lo, up);
+    ASSERT_GE(got, lo);
+    ASSERT_LE(got, up);
+    auto distance = [&](int64_t x) { return std::fabs(static_cast<double>(x) - c.anchor()); };
+    if (got > lo) {
+      ASSERT_LE(c(got), c(got - 1)) << "case " << i;
+      if (c(got) == c(got - 1)) {
+        EXPECT_GT(distance(got - 1), distance(got)) << "case " << i;
+      }
+    }
+    if (got < up) {
+      ASSERT_LE(c(got), c(got + 1)) << "case " << i;
+      if (c(got) == c(got + 1)) {
+        EXPECT_GE(distance(got + 1), distance(got)) << "case " << i;
+      }
+    }
+  }
+}
+
 TEST(Cost, KindNamesRoundTrip) {
   for (int k = 0; k < kNumCostKinds; ++k) {
     const CostKind kind = static_cast<CostKind>(k);
