@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "backend/min_cost_flow.hpp"
+#include "reduce/bmatching.hpp"
 #include "reduce/double_cover.hpp"
 
 namespace bimdf::detail {
@@ -14,7 +15,10 @@ int lp_scale_log2(const BiMcf& residual) {
   double capacity = 0;
   for (int64_t c : residual.capacity) capacity += static_cast<double>(c);
   const double lp_nodes = 2.0 * residual.num_nodes() + 1;
-  const double matching_nodes = 4.0 * residual.num_nodes() + 2 * capacity + 1;
+  // Pruning only removes arcs, so the reduced residual's throughflow limits are at most these.
+  double copies = 0;
+  for (int k : refinement_throughflow(residual)) copies += 2.0 * k;
+  const double matching_nodes = copies + 2 * capacity + 1;
   const int needed =
       static_cast<int>(std::ceil(std::log2(std::max(1.0, matching_nodes / lp_nodes))));
   return std::min(52, 56 - needed);

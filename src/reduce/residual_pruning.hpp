@@ -58,8 +58,9 @@ struct ResidualPruning {
 };
 
 // The LP's cost bound 2^L (min_cost_flow.hpp: max |cost|·S ≤ 2^L / (LP nodes + 1)): 52, or
-// less when the largest perfect matching this residual can lead to — 4 copies per node and at
-// most 2 gadget nodes per unit of arc capacity (bmatching.hpp, matching_gadgets.hpp) — would
+// less when the largest perfect matching this residual can lead to — 2K copies per node for
+// its throughflow limit K (refinement_throughflow) and at most 2 gadget nodes per unit of arc
+// capacity (bmatching.hpp, matching_gadgets.hpp) — would
 // push the doubled integer costs past the blossom solver's bound |w|·(nodes + 1) < 2^58.
 int lp_scale_log2(const BiMcf& residual);
 

@@ -20,7 +20,7 @@
 namespace bimdf::detail {
 namespace {
 
-constexpr int kThroughflow = 2;  // M = U = 2, paper §3.9
+constexpr int kDeviation = 2;  // U = 2, paper §3.9 (the throughflow limits: bmatching.hpp)
 
 // The round's perfect matching by our blossom solver, warm-started from the pruning LP: its
 // integer costs (doubled) are the matching weights, so its duals carry over exactly (see
@@ -78,7 +78,7 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
   r.flow = std::move(flow);
   r.objective = objective(p, r.flow);
   LinearizeOptions unit_pieces;
-  unit_pieces.max_deviation = kThroughflow;
+  unit_pieces.max_deviation = kDeviation;
   unit_pieces.step = 1;
   unit_pieces.tails = false;
   // Strict improvement beyond rounding noise; otherwise x is optimal (Thm 3.8).
@@ -111,7 +111,10 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
       }
     }
     t = std::chrono::steady_clock::now();
-    const BMatchingReduction bm = reduce_to_bmatching(pruned.reduced, kThroughflow);
+    const BMatchingReduction bm =
+        options.hub_throughflow
+            ? reduce_to_bmatching(pruned.reduced, refinement_throughflow(pruned.reduced))
+            : reduce_to_bmatching(pruned.reduced, 2);
     const MatchingReduction mm = reduce_to_perfect_matching(bm.bmatching);
     r.matching_nodes = std::max<int64_t>(r.matching_nodes, mm.graph.num_nodes);
     r.matching_edges = std::max<int64_t>(r.matching_edges, mm.graph.num_edges());

@@ -26,6 +26,9 @@ struct RefineOptions {
   MatchingBackend matching = MatchingBackend::Blossom;
   int64_t max_rounds = std::numeric_limits<int64_t>::max();
   double time_limit_s = std::numeric_limits<double>::infinity();
+  // Throughflow limits above 2 at hubs (bmatching.hpp: refinement_throughflow); false: K = 2 at
+  // every node, the paper's reduction (for comparisons). Exact either way.
+  bool hub_throughflow = true;
 };
 
 struct RefineResult {

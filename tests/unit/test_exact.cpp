@@ -17,6 +17,8 @@
 #include "brute_force.hpp"
 #include "milp_model.hpp"
 #include "random_problem.hpp"
+#include "reduce/bmatching.hpp"
+#include "reduce/linearize.hpp"
 #include "reduce/outer_edges.hpp"
 #include "solve/lower_bound.hpp"
 #include "solve/refine.hpp"
@@ -175,6 +177,56 @@ TEST(ExactRandom, ThreeHundredMediumInstancesMatchTheMilp) {
   }
   report(t, "MILP (CBC)");
   std::cout << "[ oracle   ] mean size " << edges / t.instances << " edges\n";
+}
+
+// Nodes with many arcs get throughflow limits above 2 in refinement (bmatching.hpp:
+// refinement_throughflow). Random problems plus a hub joined to the other nodes 50 times reach
+// the same optimum as with the paper's K = 2 everywhere (checked against brute force and CBC by
+// the tests above; CBC itself takes minutes on these hubs), in no more rounds in total.
+TEST(Exact, HubThroughflowReachesTheSameOptimum) {
+  std::mt19937_64 rng(41);
+  const testing::RandomProblemOptions opt{
+      .min_nodes = 10, .max_nodes = 30, .min_edges = 20, .max_edges = 60, .outer_edges = false};
+  int compared = 0, hubs_above_two = 0;
+  int64_t rounds_paper = 0, rounds_hub = 0;
+  for (int i = 0; i < testing::scaled(100); ++i) {
+    Problem p = testing::random_problem(rng, opt);
+    const int n = p.num_nodes(), hub = p.add_node(0);
+    for (int k = 0; k < 50; ++k) {
+      const int64_t up = 4 + static_cast<int64_t>(rng() % 8);
+      const double target = static_cast<double>(rng() % up);
+      const double weight = 0.1 + static_cast<double>(rng() % 10) / 10;
+      p.add_edge(
+          End{hub, rng() % 2 == 0}, End{static_cast<int>(rng() % n), rng() % 2 == 0}, 0, up,
+          k % 2 ? Cost::abs_deviation(target, weight) : Cost::quad_deviation(target, weight));
+    }
+    testing::plant_feasible_demands(p, rng);
+    ApproximateSolver start(p);
+    start.collapse_chains(false);
+    if (start.run() != SolveStatus::Feasible) continue;
+    detail::RefineOptions paper;
+    paper.hub_throughflow = false;
+    const detail::RefineResult a = detail::refine(p, start.solution().flow, paper);
+    const detail::RefineResult b = detail::refine(p, start.solution().flow);
+    ASSERT_TRUE(a.converged && b.converged) << "problem " << i;
+    EXPECT_TRUE(close(a.objective, b.objective))
+        << "problem " << i << ": " << a.objective << " vs " << b.objective;
+    EXPECT_TRUE(check_flow(p, b.flow).feasible()) << "problem " << i;
+    rounds_paper += a.rounds;
+    rounds_hub += b.rounds;
+    ++compared;
+    detail::LinearizeOptions unit;
+    unit.max_deviation = 2;
+    unit.step = 1;
+    unit.tails = false;
+    hubs_above_two +=
+        detail::refinement_throughflow(detail::linearize(p, b.flow, unit).mcf)[hub] > 2;
+  }
+  EXPECT_GT(compared, testing::scaled(100) / 2);
+  EXPECT_GT(hubs_above_two, compared / 2);
+  EXPECT_LE(rounds_hub, rounds_paper);
+  std::cout << "[ hubs     ] " << compared << " problems, hub limit above 2 in " << hubs_above_two
+            << ", rounds " << rounds_paper << " (K = 2) vs " << rounds_hub << "\n";
 }
 
 TEST(Exact, ResultDoesNotDependOnTheThreadCount) {

@@ -8,15 +8,18 @@
 #include <stdexcept>
 
 #include "backend/min_cost_flow.hpp"
+#include "backend/perfect_matching.hpp"
 #include "bimdf/flow.hpp"
 #include "brute_force.hpp"
 #include "core/deep_stack.hpp"
 #include "random_problem.hpp"
+#include "reduce/bmatching.hpp"
 #include "reduce/chains.hpp"
 #include "reduce/components.hpp"
 #include "reduce/double_cover.hpp"
 #include "reduce/fixed_edges.hpp"
 #include "reduce/linearize.hpp"
+#include "reduce/matching_gadgets.hpp"
 #include "reduce/outer_edges.hpp"
 #include "reduce/parity.hpp"
 #include "reduce/phase_one.hpp"
@@ -279,6 +282,80 @@ TEST(Reductions, ResidualPruningKeepsEveryImprovingCirculation) {
   EXPECT_GT(fixed, 0);
   std::cout << "[ suite    ] residual pruning: " << proofs << " proofs, " << integral
             << " integral optima, " << improving << " improving, " << fixed << " arcs fixed\n";
+}
+
+// The b-matching reduction with a throughflow limit per node (bmatching.hpp): the maximum-weight
+// perfect b-matching, through the perfect-matching gadgets and LEMON, is the cheapest
+// circulation whose head-side flow at each node v stays within K(v), found by enumeration.
+TEST(Reductions, BMatchingIsTheCheapestCirculationWithinEachNodesThroughflow) {
+  std::mt19937_64 rng(31);
+  int nonzero = 0;
+  for (int i = 0; i < testing::scaled(600); ++i) {
+    detail::BiMcf c;
+    const int n = 1 + static_cast<int>(rng() % 4), m = static_cast<int>(rng() % 7);
+    c.demand.assign(n, 0);
+    for (int a = 0; a < m; ++a) {
+      c.end_a.push_back(End{static_cast<int>(rng() % n), rng() % 2 == 0});
+      c.end_b.push_back(End{static_cast<int>(rng() % n), rng() % 2 == 0});
+      c.capacity.push_back(1 + static_cast<int64_t>(rng() % 2));
+      c.cost.push_back(static_cast<double>(static_cast<int>(rng() % 9) - 5));
+    }
+    std::vector<int> k(n);
+    for (int& kv : k) kv = 1 + static_cast<int>(rng() % 4);
+    // Enumeration over every arc flow within capacity.
+    double best = 0;  // the zero circulation
+    std::vector<int64_t> y(m, 0);
+    while (true) {
+      std::vector<int64_t> balance(n, 0), head_side(n, 0);
+      double cost = 0;
+      for (int a = 0; a < m; ++a) {
+        for (const End& e : {c.end_a[a], c.end_b[a]}) {
+          balance[e.node] += e.sign() * y[a];
+          if (e.head) head_side[e.node] += y[a];
+        }
+        cost += c.cost[a] * static_cast<double>(y[a]);
+      }
+      bool ok = true;
+      for (int v = 0; v < n; ++v) ok = ok && balance[v] == 0 && head_side[v] <= k[v];
+      if (ok) best = std::min(best, cost);
+      int a = 0;
+      while (a < m && y[a] == c.capacity[a]) y[a++] = 0;
+      if (a == m) break;
+      ++y[a];
+    }
+    const detail::BMatchingReduction bm = detail::reduce_to_bmatching(c, k);
+    const detail::MatchingReduction mm = detail::reduce_to_perfect_matching(bm.bmatching);
+    const auto matched = detail::max_weight_perfect_matching(mm.graph);
+    ASSERT_TRUE(matched.has_value()) << "instance " << i;  // the all-slack matching
+    const std::vector<int64_t> flow =
+        bm.lift(mm.lift(*matched, bm.bmatching.num_edges()), c.num_arcs());
+    double cost = 0;
+    for (int a = 0; a < m; ++a) cost += c.cost[a] * static_cast<double>(flow[a]);
+    EXPECT_EQ(cost, best) << "instance " << i;
+    nonzero += best < 0;
+  }
+  EXPECT_GT(nonzero, testing::scaled(600) / 10);
+}
+
+// Refinement's throughflow limits: 2 at ordinary nodes, more at hubs, at most kMaxThroughflow.
+TEST(Reductions, HubsGetLargerThroughflowLimits) {
+  detail::BiMcf c;
+  c.demand.assign(4, 0);
+  auto arcs = [&](int v, int w, int count) {
+    for (int i = 0; i < count; ++i) {
+      c.end_a.push_back(End{v, true});
+      c.end_b.push_back(End{w, false});
+      c.capacity.push_back(1);
+      c.cost.push_back(1);
+    }
+  };
+  arcs(0, 1, 127);  // node 0: 127 arcs, node 1: 127 + 10
+  arcs(1, 2, 10);   // node 2: 10 + 3000
+  arcs(2, 3, 3000);
+  const std::vector<int> k = detail::refinement_throughflow(c);
+  EXPECT_EQ(k, (std::vector<int>{2, 4, detail::kMaxThroughflow, detail::kMaxThroughflow}));
+  c.end_a.resize(137), c.end_b.resize(137), c.capacity.resize(137), c.cost.resize(137);
+  EXPECT_EQ(detail::refinement_throughflow(c), (std::vector<int>{2, 4, 2, 2}));
 }
 
 // Phase 1 (the approximation's last resort) with exact refinement: the artificial flow goes to
