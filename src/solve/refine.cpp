@@ -111,10 +111,11 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
       }
     }
     t = std::chrono::steady_clock::now();
-    const BMatchingReduction bm =
-        options.hub_throughflow
-            ? reduce_to_bmatching(pruned.reduced, refinement_throughflow(pruned.reduced))
-            : reduce_to_bmatching(pruned.reduced, 2);
+    const std::vector<int> throughflow = options.hub_throughflow
+                                             ? refinement_throughflow(pruned.reduced)
+                                             : std::vector<int>(pruned.reduced.num_nodes(), 2);
+    for (int k : throughflow) r.max_throughflow = std::max(r.max_throughflow, k);
+    const BMatchingReduction bm = reduce_to_bmatching(pruned.reduced, throughflow);
     const MatchingReduction mm = reduce_to_perfect_matching(bm.bmatching);
     r.matching_nodes = std::max<int64_t>(r.matching_nodes, mm.graph.num_nodes);
     r.matching_edges = std::max<int64_t>(r.matching_edges, mm.graph.num_edges());

@@ -40,6 +40,7 @@ struct RefineResult {
   double time_build_s = 0, time_pruning_s = 0, time_matching_s = 0;
   int64_t matching_nodes = 0, matching_edges = 0;  // of the largest round
   int64_t matching_free_vertices = 0;  // vertices the warm start left free, summed over rounds
+  int max_throughflow = 0;             // the largest throughflow limit of any round's b-matching
   int64_t lemon_fallbacks = 0;  // rounds our solver left to LEMON (weights too large, or a bug)
   MinCostFlowTally lps;         // how the rounds' LPs were solved
 };

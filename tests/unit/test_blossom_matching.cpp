@@ -297,7 +297,7 @@ TEST(BlossomMatching, ExactSolverAgreesWithTheLemonBackend) {
   EXPECT_GT(matchings, 20);  // the LP alone did not settle them
 }
 
-// A residual with ~70 unit arcs per node: the largest matching it can lead to has far more
+// A residual with ~130 unit arcs per node: the largest matching it can lead to has far more
 // nodes per LP node than usual, so the LP's cost scale must shrink (lp_scale_log2 < 52) for the
 // matching weights to stay within the blossom solver's bound — and they do, whatever the LP
 // keeps free.
@@ -316,7 +316,10 @@ TEST(BlossomMatching, PruningLpScaleLeavesTheMatchingItsHeadroom) {
   EXPECT_LT(log2_limit, 52);
   const bimdf::detail::ResidualPruning pruned = bimdf::detail::prune_residual(residual);
   ASSERT_FALSE(pruned.proves_optimal);
-  const auto bm = bimdf::detail::reduce_to_bmatching(pruned.reduced, 2);
+  // The limits refinement uses: above 2 at these hubs, so more copies per node.
+  const std::vector<int> throughflow = bimdf::detail::refinement_throughflow(pruned.reduced);
+  EXPECT_GT(*std::max_element(throughflow.begin(), throughflow.end()), 2);
+  const auto bm = bimdf::detail::reduce_to_bmatching(pruned.reduced, throughflow);
   const auto mm = bimdf::detail::reduce_to_perfect_matching(bm.bmatching);
   std::vector<int64_t> weight;
   for (double w : mm.graph.weight) weight.push_back(2 * std::llround(w * pruned.cost_scale));
