@@ -44,10 +44,6 @@ BMatchingReduction reduce_to_bmatching(const BiMcf& in, std::span<const int> k) 
   return r;
 }
 
-BMatchingReduction reduce_to_bmatching(const BiMcf& bimcf, int throughflow) {
-  return reduce_to_bmatching(bimcf, std::vector<int>(bimcf.num_nodes(), throughflow));
-}
-
 std::vector<int> refinement_throughflow(const BiMcf& bimcf) {
   std::vector<int> arcs(bimcf.num_nodes(), 0);
   for (int i = 0; i < bimcf.num_arcs(); ++i) {

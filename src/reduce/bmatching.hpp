@@ -45,8 +45,6 @@ struct BMatchingReduction {
 // K allows (the smaller K of the arc's ends; half its node's K for a loop) are clamped, so
 // kInfinity is fine.
 BMatchingReduction reduce_to_bmatching(const BiMcf& bimcf, std::span<const int> throughflow);
-// The same with one K for every node.
-BMatchingReduction reduce_to_bmatching(const BiMcf& bimcf, int throughflow);
 
 // K per node for refinement. K = 2 everywhere would be exact and keeps the matching smallest,
 // but then a round moves at most 2 units through any node, and at hubs — nodes with many arcs,
