@@ -55,6 +55,21 @@ std::string ms(double seconds) {
   return buf;
 }
 
+// One line per progress event, on stderr (stdout carries the result), e.g.
+//   progress 0.301 s: component 1 of 2: round 1, objective 27.6123 (lowered)
+void print_progress(const SolveProgress& p) {
+  char head[96];
+  std::snprintf(head, sizeof head, "progress %.3f s: component %d of %d: ", p.elapsed_s,
+                p.component + 1, p.components);
+  std::string what;
+  if (p.event == SolveProgress::Event::Approximated)
+    what = "approximation, objective " + shortest_decimal(p.objective);
+  else
+    what = "round " + std::to_string(p.round) + ", objective " + shortest_decimal(p.objective) +
+           (p.improved ? " (lowered)" : " (no improvement: optimal)");
+  std::cerr << head << what << std::endl;
+}
+
 std::string human_report(const Solution& s, bool exact, bool verbose) {
   std::string t;
   auto line = [&](const std::string& key, const std::string& value) {
@@ -136,8 +151,9 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "solve", "Solve a problem: a verified integer flow and its objective (JSON solution)");
   cmd->add_option("PROBLEM", o.problem, "Problem file (.bimdf or .json)")->required();
-  cmd->add_flag("--approx", o.approximate,
-                "Fast approximation only (double cover, paper §3.6) instead of the optimum");
+  CLI::Option* approx =
+      cmd->add_flag("--approx", o.approximate,
+                    "Fast approximation only (double cover, paper §3.6) instead of the optimum");
   cmd->add_option("--max-deviation", o.max_deviation,
                   "U: deviation from the guess modelled exactly at even points")
       ->default_val(5)
@@ -164,6 +180,10 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
                       "Perfect matching solver of the refinement: blossom (bimdf's own, "
                       "warm-started) or lemon (LEMON's, from scratch; a cross-check)");
   cmd->add_flag("-v,--verbose", o.verbose, "Print sizes and the time of every stage");
+  cmd->add_flag("--progress", o.progress,
+                "Print a line on standard error after each component's approximation and each "
+                "refinement round (exact solves)")
+      ->excludes(approx);
   add_output_options(cmd, o.out);
   return cmd;
 }
@@ -202,6 +222,7 @@ int run_solve(const SolveCommandOptions& o) {
     if (o.max_rounds > 0) solver.max_rounds(o.max_rounds);
     if (o.time_limit > 0) solver.time_limit(o.time_limit);
     solver.matching(o.matching);
+    if (o.progress) solver.progress(print_progress);
     solver.run();
     s = solver.solution();
   }

@@ -22,6 +22,7 @@ struct SolveCommandOptions {
   bool no_lower_bound = false;
   MatchingBackend matching = MatchingBackend::Blossom;
   bool verbose = false;
+  bool progress = false;  // a line on stderr per approximation and refinement round
   OutputOptions out;
 };
 

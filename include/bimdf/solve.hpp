@@ -31,6 +31,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -56,6 +57,28 @@ enum class DoubleCoverMode {
 enum class MatchingBackend {
   Blossom,  // bimdf's own, warm-started from each round's LP relaxation (default)
   Lemon,    // LEMON's MaxWeightedPerfectMatching from scratch: slower, kept as a cross-check
+};
+
+// One progress report of Solver::run() (see Solver::progress).
+struct SolveProgress {
+  enum class Event {
+    Approximated,     // a component's approximation is done: a feasible flow to refine
+    RefinementRound,  // one refinement round of a component is done
+  };
+  Event event = Event::Approximated;
+  // The component reported on: 0 .. components − 1 in the order they are solved, largest
+  // first (a connected problem has one component, 0).
+  int component = 0;
+  int components = 1;
+  // Refinement rounds this component has done so far (0 for Approximated).
+  int64_t round = 0;
+  // The component's objective after the event: the cost of its edges' current flow, as it
+  // would count in Solution::objective.
+  double objective = 0;
+  // RefinementRound: whether the round lowered the objective. A round that does not ends the
+  // component's refinement: its flow is then proven optimal (paper Thm 3.8).
+  bool improved = false;
+  double elapsed_s = 0;  // wall-clock seconds since run() started
 };
 
 // Thrown by run() when a stage fails in a way that is neither a solution nor a proof of
@@ -103,6 +126,14 @@ class Solver {
   Solver& lower_bound(bool enable);
   // The perfect matching solver of the refinement rounds. Default MatchingBackend::Blossom.
   Solver& matching(MatchingBackend backend);
+  // Called after each component's approximation and after each of its refinement rounds —
+  // large problems take minutes (a 10^6-edge one ~40 rounds), so that a program can show how
+  // far the solve is. Calls never overlap; with threads > 1 they come from the worker threads,
+  // and the calling worker waits until the callback returns. An exception thrown by the
+  // callback ends run() with that exception, once the components already begun by other
+  // workers are done (none is begun after it); a program can cancel a solve that way.
+  // Default: none.
+  Solver& progress(std::function<void(const SolveProgress&)> callback);
 
   // Returns Optimal, Feasible (a limit was hit) or Infeasible. Throws like ApproximateSolver.
   SolveStatus run();
@@ -124,6 +155,7 @@ class Solver {
   int threads_ = 1;
   bool lower_bound_ = true;
   MatchingBackend matching_ = MatchingBackend::Blossom;
+  std::function<void(const SolveProgress&)> progress_;
   Solution solution_;
 };
 

@@ -44,8 +44,25 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   r.approximate_objective = objective(component, simplified.lift(approx.flow));
   std::vector<int64_t> flow = std::move(approx.flow);
   r.status = SolveStatus::Feasible;
+  RefineOptions refine_options = config.refine;
+  if (config.progress) {
+    SolveProgress approximated;
+    approximated.objective = r.approximate_objective;
+    config.progress(approximated);
+    // The simplified problem lacks the fixed edges and closed chain cycles, whose cost does
+    // not change: the component's objective is the simplified one plus theirs.
+    const double fixed_cost = r.approximate_objective - objective(p, flow);
+    refine_options.on_round = [&config, fixed_cost](int64_t rounds, double obj, bool improved) {
+      SolveProgress round;
+      round.event = SolveProgress::Event::RefinementRound;
+      round.round = rounds;
+      round.objective = obj + fixed_cost;
+      round.improved = improved;
+      config.progress(round);
+    };
+  }
   if (config.exact) {
-    RefineResult refined = refine(p, std::move(flow), config.refine, approx.potential);
+    RefineResult refined = refine(p, std::move(flow), refine_options, approx.potential);
     flow = std::move(refined.flow);
     r.rounds = refined.rounds;
     r.matchings = refined.matchings;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct ComponentConfig {
   bool exact = false;        // refine the approximation to the optimum
   RefineOptions refine;      // round and time limits of the refinement
   bool lower_bound = false;  // compute the relaxation's lower bound
+  // Told of the approximation and of each refinement round (event, round, objective and
+  // improved filled in; the caller adds the rest). May be empty.
+  std::function<void(const SolveProgress&)> progress;
 };
 
 struct ComponentResult {

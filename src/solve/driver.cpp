@@ -6,6 +6,7 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <mutex>
 #include <numeric>
 #include <thread>
 
@@ -69,15 +70,27 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
   std::vector<ComponentResult> results(parts);
   std::vector<std::exception_ptr> errors(parts);
   std::atomic<int> next{0};
+  std::atomic<bool> failed{false};  // run() throws: the components not yet begun are skipped
+  std::mutex progress_mutex;
   auto worker = [&] {
-    for (int i = next++; i < parts; i = next++) {
+    for (int i = next++; i < parts && !failed; i = next++) {
       const int k = order[i];
       ComponentConfig c = config.component;
       c.refine.time_limit_s = config.time_limit_s - seconds_since(start);
+      if (config.progress)
+        c.progress = [&, i](const SolveProgress& event) {
+          SolveProgress report = event;
+          report.component = i;
+          report.components = parts;
+          const std::lock_guard<std::mutex> lock(progress_mutex);
+          report.elapsed_s = seconds_since(start);
+          config.progress(report);
+        };
       try {
         results[k] = solve_component(split.parts[k], c);
       } catch (...) {
         errors[k] = std::current_exception();
+        failed = true;
       }
     }
   };

@@ -4,6 +4,7 @@
 // and collect statistics. Both public solvers (bimdf/solve.hpp) are thin layers over this.
 #pragma once
 
+#include <functional>
 #include <limits>
 
 #include "bimdf/problem.hpp"
@@ -18,6 +19,8 @@ struct SolverConfig {
   // Wall-clock budget for the refinement of all components together; components that run out
   // keep their best flow (status Feasible).
   double time_limit_s = std::numeric_limits<double>::infinity();
+  // Solver::progress: calls serialized, component numbers and elapsed time filled in.
+  std::function<void(const SolveProgress&)> progress;
 };
 
 // Throws SolverError (bimdf/solve.hpp) on internal failures, std::overflow_error for values

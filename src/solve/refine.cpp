@@ -85,6 +85,9 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
   auto improves = [&](double next_objective) {
     return next_objective < r.objective - 1e-12 * std::max(1.0, std::fabs(r.objective));
   };
+  auto round_done = [&](bool improved) {
+    if (options.on_round) options.on_round(r.rounds, r.objective, improved);
+  };
   std::vector<double> lp_potential = std::move(start_potential);
   while (true) {
     if (r.rounds >= options.max_rounds || seconds_since(start) > options.time_limit_s) return r;
@@ -99,6 +102,7 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     ++r.rounds;
     if (pruned.proves_optimal) {
       r.converged = true;
+      round_done(false);
       return r;
     }
     if (!pruned.integral_circulation.empty()) {
@@ -107,6 +111,7 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
       if (improves(next_objective)) {
         r.flow = std::move(next);
         r.objective = next_objective;
+        round_done(true);
         continue;
       }
     }
@@ -135,10 +140,12 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     r.time_build_s += seconds_since(t);
     if (!improves(next_objective)) {
       r.converged = true;
+      round_done(false);
       return r;
     }
     r.flow = std::move(next);
     r.objective = next_objective;
+    round_done(true);
   }
 }
 

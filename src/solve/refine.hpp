@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -29,6 +30,10 @@ struct RefineOptions {
   // Throughflow limits above 2 at hubs (bmatching.hpp: refinement_throughflow); false: K = 2 at
   // every node, the paper's reduction (for comparisons). Exact either way.
   bool hub_throughflow = true;
+  // Called at the end of every round with the rounds done, the objective of the problem's
+  // current flow, and whether the round lowered it (false: the last round, which proves the
+  // flow optimal). Not called when a limit stops refinement.
+  std::function<void(int64_t rounds, double objective, bool improved)> on_round;
 };
 
 struct RefineResult {

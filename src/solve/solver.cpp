@@ -101,6 +101,10 @@ Solver& Solver::matching(MatchingBackend backend) {
   matching_ = backend;
   return *this;
 }
+Solver& Solver::progress(std::function<void(const SolveProgress&)> callback) {
+  progress_ = std::move(callback);
+  return *this;
+}
 SolveStatus Solver::run() {
   detail::SolverConfig config;
   config.component.collapse_chains = collapse_chains_;
@@ -112,6 +116,7 @@ SolveStatus Solver::run() {
   config.component.refine.matching = matching_;
   if (time_limit_s_ > 0) config.time_limit_s = time_limit_s_;
   config.threads = threads_;
+  config.progress = progress_;
   solution_ = detail::solve_problem(problem_, config);
   return solution_.status;
 }

@@ -184,7 +184,9 @@ TEST(BlossomMatching, DeeplyNestedBlossoms) {
     solver.initial_duals(std::vector<int64_t>(g.n, 0)).initial_matching(start);
     EXPECT_EQ(solve(g, solver), -(k + 1)) << "k = " << k;
     EXPECT_EQ(solver.free_after_start(), 2);
-    if (k <= 3) EXPECT_EQ(brute_force(g), -(k + 1));
+    if (k <= 3) {
+      EXPECT_EQ(brute_force(g), -(k + 1));
+    }
   }
 }
 

@@ -1,10 +1,12 @@
 // `bimdf solve`: the solution JSON (status, objective, flow, stats), exit codes 0/1/2, -o files,
-// the human report, and that the written flow passes `bimdf check`.
+// the human report, --progress, and that the written flow passes `bimdf check`.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
 #include "cli_fixture.hpp"
@@ -151,3 +153,55 @@ TEST_F(CliSolve, GenerateWritesDeterministicSolvableInstances) {
 }
 
 }  // namespace
+
+// --progress: on stderr, per component its approximation and then every refinement round, the
+// last one proving optimality; the objectives add up to the result's, stdout is unchanged, and
+// --approx (no rounds to report) excludes it.
+TEST_F(CliSolve, ProgressLinesOnStderr) {
+  const CliRun plain = run("solve --json " + kExample);
+  const CliRun r = run("solve --json --progress " + kExample);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["flow"], json::parse(plain.out)["flow"]);
+  const std::regex approximation(
+      R"(progress [0-9]+\.[0-9]{3} s: component ([0-9]+) of 2: approximation, objective (\S+))");
+  const std::regex round(
+      R"(progress [0-9]+\.[0-9]{3} s: component ([0-9]+) of 2: round ([0-9]+), objective (\S+) )"
+      R"(\((lowered|no improvement: optimal)\))");
+  std::istringstream lines(r.err);
+  std::string line;
+  std::map<int, int64_t> rounds_of;
+  std::map<int, double> last_objective;
+  std::map<int, bool> proven;
+  double approximate_sum = 0;
+  int64_t rounds = 0;
+  while (std::getline(lines, line)) {
+    std::smatch m;
+    if (std::regex_match(line, m, approximation)) {
+      const int c = std::stoi(m[1]);
+      EXPECT_EQ(rounds_of.count(c), 0u) << line;
+      rounds_of[c] = 0;
+      approximate_sum += std::stod(m[2]);
+      last_objective[c] = std::stod(m[2]);
+    } else if (std::regex_match(line, m, round)) {
+      const int c = std::stoi(m[1]);
+      ASSERT_EQ(rounds_of.count(c), 1u) << "a round before its approximation: " << line;
+      EXPECT_FALSE(proven[c]) << "a round after the proof: " << line;
+      EXPECT_EQ(std::stoll(m[2]), ++rounds_of[c]) << line;
+      last_objective[c] = std::stod(m[3]);
+      proven[c] = m[4] == "no improvement: optimal";
+      ++rounds;
+    } else {
+      ADD_FAILURE() << "unexpected line on stderr: " << line;
+    }
+  }
+  ASSERT_EQ(rounds_of.size(), 2u) << r.err;
+  EXPECT_TRUE(proven[1] && proven[2]) << r.err;
+  EXPECT_NEAR(approximate_sum, j["stats"]["approximate_objective"].get<double>(), 1e-9);
+  EXPECT_NEAR(last_objective[1] + last_objective[2], j["objective"].get<double>(), 1e-9);
+  EXPECT_EQ(rounds, j["stats"]["refinement_rounds"].get<int64_t>());
+
+  const CliRun bad = run("solve --approx --progress " + kExample);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--approx excludes --progress"), std::string::npos) << bad.err;
+}
