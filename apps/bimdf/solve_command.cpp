@@ -56,7 +56,7 @@ std::string ms(double seconds) {
 }
 
 // One line per progress event, on stderr (stdout carries the result), e.g.
-//   progress 0.301 s: component 1 of 2: round 1, objective 27.6123 (lowered)
+//   progress 0.392 s: component 1 of 2: round 1, objective 27.443912861937058 (lowered)
 void print_progress(const SolveProgress& p) {
   char head[96];
   std::snprintf(head, sizeof head, "progress %.3f s: component %d of %d: ", p.elapsed_s,

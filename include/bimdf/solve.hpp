@@ -128,10 +128,11 @@ class Solver {
   Solver& matching(MatchingBackend backend);
   // Called after each component's approximation and after each of its refinement rounds —
   // large problems take minutes (a 10^6-edge one ~40 rounds), so that a program can show how
-  // far the solve is. Calls never overlap; with threads > 1 they come from the worker threads,
-  // and the calling worker waits until the callback returns. An exception thrown by the
-  // callback ends run() with that exception, once the components already begun by other
-  // workers are done (none is begun after it); a program can cancel a solve that way.
+  // far the solve is. Components proven infeasible report nothing. Calls never overlap; with
+  // threads > 1 they may come from worker threads, and the calling worker waits until the
+  // callback returns (time that counts against time_limit). An exception thrown by the
+  // callback cancels the solve: no further call is made, the components being solved stop at
+  // their next report, and run() throws that exception — a program can stop a long solve so.
   // Default: none.
   Solver& progress(std::function<void(const SolveProgress&)> callback);
 

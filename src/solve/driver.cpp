@@ -70,10 +70,15 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
   std::vector<ComponentResult> results(parts);
   std::vector<std::exception_ptr> errors(parts);
   std::atomic<int> next{0};
-  std::atomic<bool> failed{false};  // run() throws: the components not yet begun are skipped
+  // Progress calls are serialized. The first exception a callback throws cancels the solve: it
+  // is what run() throws, no call follows it, and every component still running stops at its
+  // next report (by a Cancelled exception, dropped below) and none begins.
+  struct Cancelled {};
   std::mutex progress_mutex;
+  std::exception_ptr cancellation;
+  std::atomic<bool> cancelled{false};
   auto worker = [&] {
-    for (int i = next++; i < parts && !failed; i = next++) {
+    for (int i = next++; i < parts && !cancelled; i = next++) {
       const int k = order[i];
       ComponentConfig c = config.component;
       c.refine.time_limit_s = config.time_limit_s - seconds_since(start);
@@ -83,14 +88,22 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
           report.component = i;
           report.components = parts;
           const std::lock_guard<std::mutex> lock(progress_mutex);
+          if (cancelled) throw Cancelled{};
           report.elapsed_s = seconds_since(start);
-          config.progress(report);
+          try {
+            config.progress(report);
+          } catch (...) {
+            cancellation = std::current_exception();
+            cancelled = true;
+            throw Cancelled{};
+          }
         };
       try {
         results[k] = solve_component(split.parts[k], c);
+      } catch (const Cancelled&) {
+        // run() throws `cancellation` once the workers are done
       } catch (...) {
         errors[k] = std::current_exception();
-        failed = true;
       }
     }
   };
@@ -102,6 +115,7 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
     for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
     for (std::thread& t : pool) t.join();
   }
+  if (cancellation) std::rethrow_exception(cancellation);
   for (int k = 0; k < parts; ++k) {
     if (!errors[k]) continue;
     try {

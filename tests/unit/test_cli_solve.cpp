@@ -152,8 +152,6 @@ TEST_F(CliSolve, GenerateWritesDeterministicSolvableInstances) {
   EXPECT_EQ(run("generate random --size 0").exit_code, 2);
 }
 
-}  // namespace
-
 // --progress: on stderr, per component its approximation and then every refinement round, the
 // last one proving optimality; the objectives add up to the result's, stdout is unchanged, and
 // --approx (no rounds to report) excludes it.
@@ -205,3 +203,5 @@ TEST_F(CliSolve, ProgressLinesOnStderr) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--approx excludes --progress"), std::string::npos) << bad.err;
 }
+
+}  // namespace
