@@ -28,8 +28,6 @@
 namespace bimdf {
 namespace {
 
-bool close(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::max(1.0, std::fabs(b)); }
-
 bool within(const std::vector<int64_t>& flow, int64_t lo, int64_t hi) {
   return std::all_of(flow.begin(), flow.end(), [&](int64_t x) { return lo <= x && x <= hi; });
 }
@@ -83,7 +81,7 @@ void compare(const Problem& p, bool oracle_feasible, double oracle_objective,
                   p);
   // Lower than the oracle: our flow is verified, so the oracle missed it — outside its window,
   // or (MILP) within the solver's own tolerances. Counted and reported, not a mismatch.
-  if (!close(s.objective, oracle_objective)) {
+  if (!testing::relatively_close(s.objective, oracle_objective)) {
     if (in_window(s.flow))
       ++t.oracle_short;
     else
@@ -148,7 +146,7 @@ TEST(ExactRandom, RelaxationLowerBoundNeverExceedsTheOptimum) {
     ASSERT_LE(lb, truth.optimum + 1e-9 * std::max(1.0, std::fabs(truth.optimum)))
         << "instance " << i << "\n"
         << to_bimdf(p);
-    tight += close(lb, truth.optimum);
+    tight += testing::relatively_close(lb, truth.optimum);
   }
   EXPECT_GT(feasible, testing::scaled(3000) / 3);
   EXPECT_GT(tight, feasible / 4);
@@ -209,7 +207,7 @@ TEST(Exact, HubThroughflowReachesTheSameOptimum) {
     const detail::RefineResult a = detail::refine(p, start.solution().flow, paper);
     const detail::RefineResult b = detail::refine(p, start.solution().flow);
     ASSERT_TRUE(a.converged && b.converged) << "problem " << i;
-    EXPECT_TRUE(close(a.objective, b.objective))
+    EXPECT_TRUE(testing::relatively_close(a.objective, b.objective))
         << "problem " << i << ": " << a.objective << " vs " << b.objective;
     EXPECT_TRUE(check_flow(p, b.flow).feasible()) << "problem " << i;
     EXPECT_EQ(a.lemon_fallbacks + b.lemon_fallbacks, 0) << "problem " << i;
@@ -264,7 +262,8 @@ TEST(Exact, ApproximatingBeforeOrAfterChainCollapseReachesTheSameOptimum) {
     ASSERT_EQ(status, unchained.run()) << "problem " << i;
     if (status != SolveStatus::Optimal) continue;
     ++optimal;
-    EXPECT_TRUE(close(chained.solution().objective, unchained.solution().objective))
+    EXPECT_TRUE(
+        testing::relatively_close(chained.solution().objective, unchained.solution().objective))
         << "problem " << i << ": " << chained.solution().objective << " vs "
         << unchained.solution().objective;
   }
@@ -291,7 +290,7 @@ TEST(Exact, RefinementFromAnyStartingPotentialsReachesTheOptimum) {
     const detail::RefineResult cold = detail::refine(p, start.solution().flow);
     const detail::RefineResult warm = detail::refine(p, start.solution().flow, {}, potential);
     ASSERT_TRUE(cold.converged && warm.converged) << "problem " << i;
-    EXPECT_TRUE(close(cold.objective, warm.objective))
+    EXPECT_TRUE(testing::relatively_close(cold.objective, warm.objective))
         << "problem " << i << ": " << cold.objective << " vs " << warm.objective;
     ++compared;
   }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <string>
@@ -12,6 +13,12 @@
 #include "bimdf/mesh.hpp"
 
 namespace bimdf::testing {
+
+// a equals b up to a relative 1e-9 (absolute below magnitude 1): objectives recomputed in
+// double by different routes.
+inline bool relatively_close(double a, double b) {
+  return std::fabs(a - b) <= 1e-9 * std::max(1.0, std::fabs(b));
+}
 
 // The message of the InputError that `f` throws; fails the test if it throws nothing.
 inline std::string input_error_of(const std::function<void()>& f) {

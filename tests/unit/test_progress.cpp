@@ -24,8 +24,6 @@
 namespace bimdf {
 namespace {
 
-bool close(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::max(1.0, std::fabs(b)); }
-
 using Event = SolveProgress::Event;
 
 const std::string kBunny =
@@ -82,7 +80,7 @@ std::map<int, std::vector<SolveProgress>> check_reports(const Recorder& rec, con
       if (events[i].improved) {
         EXPECT_LT(events[i].objective, events[i - 1].objective) << at;
       } else {
-        EXPECT_TRUE(close(events[i].objective, events[i - 1].objective)) << at;
+        EXPECT_TRUE(testing::relatively_close(events[i].objective, events[i - 1].objective)) << at;
         EXPECT_EQ(i + 1, events.size()) << at << ": a round after the proof";
       }
     }
@@ -95,9 +93,11 @@ std::map<int, std::vector<SolveProgress>> check_reports(const Recorder& rec, con
               std::get<int64_t>(s.stats.at("components")))
         << where << ": a component did not report";
   }
-  EXPECT_TRUE(close(approximate_sum, std::get<double>(s.stats.at("approximate_objective"))))
+  EXPECT_TRUE(testing::relatively_close(approximate_sum,
+                                        std::get<double>(s.stats.at("approximate_objective"))))
       << where << ": " << approximate_sum;
-  EXPECT_TRUE(close(final_sum, s.objective)) << where << ": " << final_sum << " vs " << s.objective;
+  EXPECT_TRUE(testing::relatively_close(final_sum, s.objective))
+      << where << ": " << final_sum << " vs " << s.objective;
   EXPECT_EQ(rounds, std::get<int64_t>(s.stats.at("refinement_rounds"))) << where;
   EXPECT_EQ(all_proven, s.status == SolveStatus::Optimal) << where;
   return by_component;

@@ -65,8 +65,6 @@ detail::ParityRepair tjoin_repaired_minimizers(const Problem& p) {
   return detail::repair_parity(p, g, detail::ParityMode::SpanningTreeTJoin);
 }
 
-bool near(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::max(1.0, std::fabs(b)); }
-
 // The reduced problem's optimum, lifted, is feasible for the original and as good as its
 // optimum; infeasibility is preserved. `lift` maps a reduced flow to an original one.
 template <typename Lift>
@@ -79,7 +77,7 @@ void expect_equivalent(const Problem& original, const Problem& reduced, const Li
   const std::vector<int64_t> x = lift(r.flow);
   const FlowCheck check = check_flow(original, x);
   ASSERT_TRUE(check.feasible()) << "instance " << instance;
-  EXPECT_TRUE(near(check.objective, truth.optimum)) << "instance " << instance;
+  EXPECT_TRUE(testing::relatively_close(check.objective, truth.optimum)) << "instance " << instance;
 }
 
 TEST(Reductions, FixedEdgesLiftExactly) {
@@ -142,7 +140,7 @@ TEST(Reductions, ComponentsLiftExactly) {
     if (!feasible) continue;
     const FlowCheck check = check_flow(p, split.lift(flows));
     ASSERT_TRUE(check.feasible());
-    EXPECT_TRUE(near(check.objective, truth.optimum)) << "instance " << i;
+    EXPECT_TRUE(testing::relatively_close(check.objective, truth.optimum)) << "instance " << i;
   }
 }
 
@@ -260,7 +258,8 @@ TEST(Reductions, ResidualPruningKeepsEveryImprovingCirculation) {
     }
     if (!pruned.integral_circulation.empty()) {
       ++integral;
-      EXPECT_TRUE(near(objective(p, lin.lift(pruned.integral_circulation)), best.optimum))
+      EXPECT_TRUE(testing::relatively_close(objective(p, lin.lift(pruned.integral_circulation)),
+                                            best.optimum))
           << "instance " << i;
     }
     if (!improves) continue;
