@@ -26,6 +26,7 @@
 #include "markdown_table.hpp"
 #include "milp_model.hpp"
 #include "remesh_bench.hpp"
+#include "requantize_bench.hpp"
 
 namespace {
 
@@ -139,7 +140,25 @@ int main(int argc, char** argv) {
                  "Folder of QuadWild layouts (with expected.tsv): benchmark `bimdf quantize` and "
                  "`bimdf remesh`, replacing the <!-- quantize:begin/end --> and "
                  "<!-- remesh:begin/end --> sections of the Markdown file");
+  bool only_requantize = false;
+  app.add_flag("--only-requantize", only_requantize,
+               "Run just the requantize benchmark on the --layouts folder (replaces the "
+               "<!-- requantize:begin/end --> section)");
   CLI11_PARSE(app, argc, argv);
+  if (only_requantize) {
+    if (layouts_dir.empty()) {
+      std::cerr << "--only-requantize needs --layouts\n";
+      return 2;
+    }
+    const std::string section = benchmark_requantize(cli, layouts_dir, repeats);
+    std::cout << section;
+    if (!md_path.empty() && !replace_section(md_path, "requantize", section)) {
+      std::cerr << md_path
+                << ": no <!-- requantize:begin --> ... <!-- requantize:end --> section\n";
+      return 2;
+    }
+    return 0;
+  }
   if (only_layouts) {
     instances_dir.clear();
     scaling.clear();

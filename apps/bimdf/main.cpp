@@ -20,6 +20,7 @@
 #include "quantize_command.hpp"
 #include "remesh_command.hpp"
 #include "render_command.hpp"
+#include "requantize_command.hpp"
 #include "solve_command.hpp"
 
 namespace {
@@ -271,6 +272,8 @@ int main(int argc, char** argv) {
   CLI::App* metrics = add_metrics_command(app, metrics_options);
   RenderCommandOptions render_options;
   CLI::App* render = add_render_command(app, render_options);
+  RequantizeCommandOptions requantize_options;
+  CLI::App* requantize = add_requantize_command(app, requantize_options);
 
   try {
     app.parse(argc, argv);
@@ -289,6 +292,7 @@ int main(int argc, char** argv) {
     if (*tessellate) return run_tessellate(tessellate_options);
     if (*metrics) return run_metrics(metrics_options);
     if (*render) return run_render(render_options);
+    if (*requantize) return run_requantize(requantize_options);
     if (*generate) return run_generate(family, size, seed, generate_out, generate_format);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";

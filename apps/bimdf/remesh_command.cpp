@@ -23,14 +23,7 @@ void add_mesh_output(CLI::App* cmd, RemeshCommandOptions& o) {
   cmd->add_flag("--json", o.quantize.out.json, "Print the report as JSON on stdout");
   cmd->add_option("--report", o.quantize.out.file, "Also write the report JSON to this file");
   cmd->add_flag("-v,--verbose", o.verbose, "Per-chart pattern details");
-  cmd->add_option("--smooth-iterations", o.smoothing.iterations,
-                  "Smoothing rounds on the surface after stitching (0: none)")
-      ->default_val(30)
-      ->check(CLI::Range(0, 100000));
-  cmd->add_option("--smooth-damping", o.smoothing.damping,
-                  "How far each round moves a vertex towards its smoothed position")
-      ->default_val(0.5)
-      ->check(CLI::Range(0.0, 1.0));
+  add_smoothing_options(cmd, o.smoothing);
 }
 
 // Subside lengths from a `bimdf quantize` JSON.
@@ -59,11 +52,6 @@ std::vector<int64_t> read_quantization(const std::string& path, const quant::Lay
   }
   return lengths;
 }
-
-struct TessellationReport {
-  json j;
-  std::string text;
-};
 
 TessellationReport report_tessellation(const quant::Tessellation& t, const std::string& out,
                                        bool verbose) {
@@ -116,6 +104,17 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
   return r;
 }
 
+void write_mesh(const quant::Tessellation& t, const RemeshCommandOptions& o,
+                const std::vector<std::string>& inputs) {
+  std::ostringstream obj;
+  write_obj(obj, t.mesh, "bimdf quad mesh from " + o.quantize.layout);
+  write_output_file(o.mesh_out, obj.str(), inputs);
+}
+
+}  // namespace
+
+namespace {
+
 std::string valence_list(const std::map<int, int>& counts) {
   std::string text;
   for (auto [valence, n] : counts)
@@ -128,6 +127,19 @@ std::string number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", v);
   return buf;
+}
+
+}  // namespace
+
+void add_smoothing_options(CLI::App* cmd, quant::SmoothingOptions& smoothing) {
+  cmd->add_option("--smooth-iterations", smoothing.iterations,
+                  "Smoothing rounds on the surface after stitching (0: none)")
+      ->default_val(30)
+      ->check(CLI::Range(0, 100000));
+  cmd->add_option("--smooth-damping", smoothing.damping,
+                  "How far each round moves a vertex towards its smoothed position")
+      ->default_val(0.5)
+      ->check(CLI::Range(0.0, 1.0));
 }
 
 TessellationReport report_metrics(const QuadMeshMetrics& m) {
@@ -182,15 +194,6 @@ TessellationReport report_metrics(const QuadMeshMetrics& m) {
   r.text = s.str();
   return r;
 }
-
-void write_mesh(const quant::Tessellation& t, const RemeshCommandOptions& o,
-                const std::vector<std::string>& inputs) {
-  std::ostringstream obj;
-  write_obj(obj, t.mesh, "bimdf quad mesh from " + o.quantize.layout);
-  write_output_file(o.mesh_out, obj.str(), inputs);
-}
-
-}  // namespace
 
 CLI::App* add_remesh_command(CLI::App& app, RemeshCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand(

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <string>
 
+#include "bimdf/metrics.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "quantize_command.hpp"
 
@@ -22,6 +24,18 @@ struct MetricsCommandOptions {
   std::string mesh, reference;
   OutputOptions out;
 };
+
+// A result for both outputs: the JSON report and the human summary.
+struct TessellationReport {
+  nlohmann::json j;
+  std::string text;
+};
+
+// --smooth-iterations and --smooth-damping (remesh, tessellate, requantize).
+void add_smoothing_options(CLI::App* cmd, quant::SmoothingOptions& smoothing);
+
+// The mesh part of the remesh report (also used by requantize).
+TessellationReport report_metrics(const QuadMeshMetrics& metrics);
 
 CLI::App* add_metrics_command(CLI::App& app, MetricsCommandOptions& options);
 int run_metrics(const MetricsCommandOptions& options);

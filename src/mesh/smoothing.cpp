@@ -135,7 +135,8 @@ struct SurfaceSmoother::Setup {
   std::vector<std::unique_ptr<detail::TriangleTree>> trees;  // per chart, built on first use
 };
 
-SurfaceSmoother::SurfaceSmoother(const Layout& layout, Tessellation& t)
+SurfaceSmoother::SurfaceSmoother(const Layout& layout, Tessellation& t,
+                                 const std::vector<std::vector<int>>* vertex_charts)
     : setup_(std::make_unique<Setup>(Setup{layout, t, {}, {}, {}, {}, {}, {}, {}})) {
   const QuadMesh& mesh = t.mesh;
   const int nv = mesh.num_vertices();
@@ -209,6 +210,7 @@ SurfaceSmoother::SurfaceSmoother(const Layout& layout, Tessellation& t)
       curve[v] = joint_curve[o.mesh_vertex];
     else if (o.mesh_vertex >= 0 && !pinned[o.mesh_vertex])
       charts[v].assign(charts_at[o.mesh_vertex].begin(), charts_at[o.mesh_vertex].end());
+    if (vertex_charts && !(*vertex_charts)[v].empty()) charts[v] = (*vertex_charts)[v];
   }
   std::vector<std::vector<std::array<int, 3>>> corners(nv);  // (next, opposite, previous)
   for (const auto& q : mesh.quads)

@@ -14,8 +14,13 @@ namespace bimdf::quant {
 class SurfaceSmoother {
  public:
   // Prepares smoothing `tessellation` (a tessellation of `layout`; both must outlive the
-  // smoother, and the mesh's connectivity must not change).
-  SurfaceSmoother(const Layout& layout, Tessellation& tessellation);
+  // smoother, and the mesh's connectivity must not change). `vertex_charts`, when given, has
+  // one entry per quad mesh vertex: a non-empty entry replaces the charts that vertex may move
+  // on (and be projected onto), which its origin would otherwise decide — for vertices made of
+  // several layout points (tmesh collapse) that belong to more charts than one origin names.
+  // Meant for vertices not on a border or feature curve; empty entries change nothing.
+  SurfaceSmoother(const Layout& layout, Tessellation& tessellation,
+                  const std::vector<std::vector<int>>* vertex_charts = nullptr);
   ~SurfaceSmoother();
 
   // smooth_on_surface: every vertex may move.

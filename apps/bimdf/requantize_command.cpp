@@ -1,0 +1,264 @@
+#include "requantize_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "bimdf/error.hpp"
+#include "bimdf/io.hpp"
+#include "bimdf/metrics.hpp"
+#include "bimdf/tmesh/collapse.hpp"
+#include "bimdf/tmesh/from_quad_mesh.hpp"
+#include "bimdf/tmesh/requantize.hpp"
+#include "remesh_command.hpp"
+
+namespace bimdf::cli {
+namespace {
+
+using nlohmann::json;
+
+// The mean length of the mesh's edges (each counted once per quad side).
+double mean_edge_length(const QuadMesh& mesh) {
+  double sum = 0;
+  for (const auto& q : mesh.quads)
+    for (int a = 0; a < 4; ++a) {
+      const auto& p = mesh.vertices[q[a]];
+      const auto& r = mesh.vertices[q[(a + 1) % 4]];
+      sum += std::sqrt((p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]) +
+                       (p[2] - r[2]) * (p[2] - r[2]));
+    }
+  return mesh.quads.empty() ? 0 : sum / (4.0 * mesh.quads.size());
+}
+
+// Output quad edges per input edge, from --scale / --edge-length / --target-faces.
+double density(const RequantizeCommandOptions& o, const QuadMesh* mesh) {
+  if (o.target_faces > 0) {
+    if (!mesh || mesh->quads.empty())
+      throw UsageError{"--target-faces needs the quad mesh the T-mesh was made from"};
+    return std::sqrt(static_cast<double>(o.target_faces) / mesh->num_quads());
+  }
+  if (o.edge_length > 0) {
+    if (!mesh || mesh->quads.empty())
+      throw UsageError{"--edge-length needs the quad mesh the T-mesh was made from"};
+    const double mean = mean_edge_length(*mesh);
+    if (!(mean > 0)) throw InputError(o.mesh, "", "all edges have length 0");
+    return mean / o.edge_length;
+  }
+  return 1 / o.scale;
+}
+
+json valences(const std::map<int, int>& counts) {
+  json j = json::object();
+  for (auto [valence, n] : counts) j[std::to_string(valence)] = n;
+  return j;
+}
+
+void write_text(const std::string& path, const std::string& text,
+                const std::vector<std::string>& inputs) {
+  if (!path.empty()) write_output_file(path, text, inputs);
+}
+
+}  // namespace
+
+CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "requantize",
+      "Re-quantize a quad mesh's layout (motorcycle T-mesh): new density or a coarser layout, "
+      "same singularities, features and border");
+  cmd->add_option("MESH", o.mesh, "An all-quad, manifold OBJ mesh (optional with --tmesh-in)");
+  cmd->add_option("-o,--output", o.mesh_out, "The quad mesh OBJ to write (one group per patch)");
+  auto* scale = cmd->add_option("--scale", o.scale,
+                                "Output edge length as a multiple of the input's (quads ≈ "
+                                "input quads / F²)")
+                    ->default_val(1.0)
+                    ->check(CLI::PositiveNumber);
+  auto* length = cmd->add_option("--edge-length", o.edge_length,
+                                 "Absolute target edge length (in the mesh's units)")
+                     ->check(CLI::PositiveNumber);
+  auto* faces = cmd->add_option("--target-faces", o.target_faces, "Aim at about this many quads")
+                    ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+  scale->excludes(length)->excludes(faces);
+  length->excludes(faces);
+  cmd->add_flag("--coarse", o.coarse,
+                "The coarsest layout the separation constraints allow (zero-length arcs "
+                "collapse strips), tessellated at the requested density");
+  cmd->add_option("--cost", o.cost, "Deviation cost of each arc from its target length")
+      ->default_val("quadratic")
+      ->check(CLI::IsMember({"quadratic", "abs"}));
+  cmd->add_option("--sharp-angle", o.sharp_angle,
+                  "Edges whose dihedral angle exceeds this many degrees are features (180: none)")
+      ->default_val(35.0)
+      ->check(CLI::Range(0.0, 180.0));
+  cmd->add_option("--feature", o.feature_file,
+                  "Feature edges of the quad mesh (QuadWild-style: count, then `face,edge` lines)");
+  cmd->add_option("--layout-out", o.layout_out,
+                  "Write the output's conforming quad layout (OBJ: one face group per patch)");
+  auto* out = cmd->add_option("--tmesh-out", o.tmesh_out, "Write the T-mesh as JSON");
+  auto* in = cmd->add_option("--tmesh-in", o.tmesh_in,
+                             "Quantize this T-mesh JSON instead of tracing MESH");
+  out->excludes(in);
+  cmd->add_option("--threads", o.threads, "Worker threads of the solver")
+      ->default_val(1)
+      ->check(CLI::Range(1, 256));
+  add_smoothing_options(cmd, o.smoothing);
+  cmd->add_flag("--json", o.out.json, "Print the report as JSON on stdout");
+  cmd->add_option("--report", o.out.file, "Also write the report JSON to this file");
+  cmd->add_flag("-v,--verbose", o.verbose, "Solver statistics");
+  return cmd;
+}
+
+int run_requantize(const RequantizeCommandOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  if (o.mesh.empty() && o.tmesh_in.empty())
+    throw UsageError{"requantize needs a quad mesh MESH, or --tmesh-in T.json"};
+  if (o.mesh_out.empty() && o.layout_out.empty() && o.tmesh_out.empty() && !o.out.json &&
+      o.out.file.empty())
+    throw UsageError{"nothing to write: give -o OUT.obj (or --layout-out, --tmesh-out, --json)"};
+  std::vector<std::string> inputs;
+  for (const std::string& f : {o.mesh, o.tmesh_in, o.feature_file})
+    if (!f.empty()) inputs.push_back(f);
+  // Outputs are checked before any work, so that a refused one costs nothing.
+  for (const std::string& f : {o.mesh_out, o.layout_out, o.tmesh_out, o.out.file})
+    for (const std::string& i : inputs)
+      if (!f.empty() && f == i) throw UsageError{"refusing to overwrite the input " + i};
+
+  QuadMesh mesh;
+  const bool have_mesh = !o.mesh.empty();
+  if (have_mesh) {
+    mesh = read_obj_quads(o.mesh);
+    if (mesh.quads.empty()) throw InputError(o.mesh, "", "no faces: expected an all-quad mesh");
+  }
+  const double read_s = seconds_since(start);
+  tmesh::RequantizeOptions ro;
+  ro.quantize.cost =
+      o.cost == "abs" ? tmesh::DeviationCost::Absolute : tmesh::DeviationCost::Quadratic;
+  ro.quantize.coarse = o.coarse;
+  ro.quantize.threads = o.threads;
+  ro.smoothing = o.smoothing;
+  tmesh::TracedTMesh traced;
+  const std::string source = o.tmesh_in.empty() ? o.mesh : o.tmesh_in;
+  if (!o.tmesh_in.empty()) {
+    traced.tmesh = tmesh::read_tmesh_json(o.tmesh_in);
+    const double factor = density(o, have_mesh ? &mesh : nullptr);
+    for (double& t : traced.tmesh.arc_target) t *= factor;
+    if (!traced.tmesh.patch_grid.empty() && !have_mesh)
+      throw UsageError{o.tmesh_in + " refers to a quad mesh's vertices: give that mesh as MESH"};
+  } else {
+    ro.trace.sharp_angle_deg = o.sharp_angle;
+    ro.trace.density = density(o, &mesh);
+    if (!o.feature_file.empty())
+      ro.trace.feature_edges = tmesh::read_quad_feature_file(o.feature_file, mesh);
+    traced = tmesh::trace_tmesh(mesh, ro.trace, o.mesh);
+  }
+  const double traced_s = seconds_since(start);
+  if (!o.tmesh_out.empty()) {
+    std::ostringstream text;
+    tmesh::write_tmesh_json(text, traced.tmesh);
+    write_text(o.tmesh_out, text.str(), inputs);
+  }
+  tmesh::RequantizeResult r;
+  try {
+    r = tmesh::requantize_tmesh(std::move(traced), have_mesh ? &mesh : nullptr, ro, source);
+  } catch (const tmesh::CollapseError& e) {
+    throw std::runtime_error(std::string("collapsing the quantized T-mesh failed: ") + e.what());
+  }
+  const tmesh::TMesh& tm = r.traced.tmesh;
+  const tmesh::TMeshQuantization& q = r.quantization;
+  const tmesh::CollapsedMesh& collapsed = r.collapsed;
+  json j;
+  std::ostringstream s;
+  j["status"] = std::string(status_name(q.status));
+  j["tmesh_patches"] = tm.num_patches();
+  j["tmesh_arcs"] = tm.num_arcs();
+  j["nonzero_paths"] = tm.nonzero_paths.size();
+  j["min_one_constraints"] = q.constraints.size();
+  j["seeds"] = r.traced.seeds.size();
+  j["traces"] = r.traced.traces;
+  j["model"] = {{"nodes", q.nodes}, {"edges", q.edges}};
+  s << "t-mesh        " << tm.num_patches() << " patches, " << tm.num_arcs() << " arcs, "
+    << r.traced.seeds.size() << " seeds, " << tm.nonzero_paths.size() << " non-zero paths ("
+    << q.constraints.size() << " min-one constraints: " << q.constraints.sides.size() << " sides, "
+    << q.constraints.arcs.size() << " arcs)\n";
+  s << "status        " << status_name(q.status) << "\n";
+  if (q.arc_length.empty()) {
+    // Only a T-mesh from elsewhere can lack a valid quantization: one traced on a quad mesh
+    // always has one (the input's own edge counts).
+    std::cerr << "error: the T-mesh has no valid quantization (opposite sides cannot be made "
+                 "equal with the non-zero paths kept)\n";
+    deliver(o.out, s.str(), j.dump(1) + "\n", inputs);
+    return kNoSolution;
+  }
+  j["objective"] = q.objective;
+  j["zero_arcs"] = q.zero_arcs;
+  if (o.coarse) j["coarse_objective"] = q.coarse_objective;
+  s << "objective     " << q.objective << (o.coarse ? " (coarse stage " : "")
+    << (o.coarse ? std::to_string(q.coarse_objective) + ")" : "") << "; " << q.zero_arcs << " of "
+    << tm.num_arcs() << " arcs quantized to 0\n";
+  if (o.verbose) {
+    s << "model         " << q.nodes << " nodes, " << q.edges << " edges; model "
+      << ms(q.time_model_s) << ", solve " << ms(q.time_solve_s) << "\n";
+  }
+
+  if (!o.mesh_out.empty()) {
+    std::ostringstream obj;
+    write_obj(obj, collapsed.mesh, "bimdf requantize of " + (have_mesh ? o.mesh : o.tmesh_in));
+    write_output_file(o.mesh_out, obj.str(), inputs);
+  }
+  const tmesh::ConformingLayout layout = tmesh::conforming_layout(collapsed.mesh);
+  if (!o.layout_out.empty()) {
+    std::ostringstream obj;
+    tmesh::write_layout_obj(obj, collapsed.mesh, layout);
+    write_text(o.layout_out, obj.str(), inputs);
+  }
+  j["layout_patches"] = layout.patch_corners.size();
+  j["quads"] = collapsed.mesh.num_quads();
+  j["collapsed_patches"] = collapsed.collapsed_patches;
+  s << "layout        " << layout.patch_corners.size() << " patches ("
+    << collapsed.collapsed_patches << " T-mesh patches collapsed)\n";
+  s << "quad mesh     " << (o.mesh_out.empty() ? "(not written)" : o.mesh_out) << ": "
+    << collapsed.mesh.num_quads() << " quads, " << collapsed.mesh.num_vertices() << " vertices\n";
+
+  TriangleMesh reference;  // the input's quads split in two, for distances
+  if (have_mesh)
+    for (const auto& quad : mesh.quads) {
+      reference.faces.push_back({quad[0], quad[1], quad[2]});
+      reference.faces.push_back({quad[0], quad[2], quad[3]});
+    }
+  reference.vertices = mesh.vertices;
+  const auto measuring = std::chrono::steady_clock::now();
+  const QuadMeshMetrics out_metrics =
+      measure_quad_mesh(collapsed.mesh, have_mesh ? &reference : nullptr);
+  const TessellationReport mr = report_metrics(out_metrics);
+  j["metrics"] = mr.j;
+  j["singularities_out"] = {{"inside", valences(out_metrics.interior_singularities)},
+                            {"border", valences(out_metrics.boundary_singularities)}};
+  j["base_complex_out"] = out_metrics.base_complex_faces;
+  if (have_mesh) {
+    const QuadMeshMetrics in_metrics = measure_quad_mesh(mesh);
+    j["singularities_in"] = {{"inside", valences(in_metrics.interior_singularities)},
+                             {"border", valences(in_metrics.boundary_singularities)}};
+    j["base_complex_in"] = in_metrics.base_complex_faces;
+    j["quads_in"] = mesh.num_quads();
+    s << "input         " << mesh.num_quads() << " quads, " << in_metrics.singular_vertices()
+      << " singular vertices, base complex " << in_metrics.base_complex_faces << " patches\n";
+  }
+  s << mr.text;
+  j["time"] = {{"read_s", read_s},
+               {"trace_s", traced_s - read_s},
+               {"model_s", q.time_model_s},
+               {"solve_s", q.time_solve_s},
+               {"collapse_s", r.time_collapse_s},
+               {"smoothing_s", r.time_smoothing_s},
+               {"metrics_s", seconds_since(measuring)},
+               {"total_s", seconds_since(start)}};
+  s << "time          " << ms(seconds_since(start)) << " (read " << ms(read_s) << ", trace "
+    << ms(traced_s - read_s) << ", quantize " << ms(r.time_quantize_s) << ", collapse "
+    << ms(r.time_collapse_s) << ", smoothing " << ms(r.time_smoothing_s) << ")\n";
+  deliver(o.out, s.str(), j.dump(1) + "\n", inputs);
+  return kOk;
+}
+
+}  // namespace bimdf::cli

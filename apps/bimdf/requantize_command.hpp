@@ -1,0 +1,36 @@
+// `bimdf requantize`: a quad mesh's layout re-quantized — a new density, or the coarsest
+// layout its singularities and features allow — and tessellated again (include/bimdf/tmesh).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "bimdf/quant/tessellate.hpp"
+#include "bimdf/tmesh/quantize.hpp"
+#include "output.hpp"
+
+namespace bimdf::cli {
+
+struct RequantizeCommandOptions {
+  std::string mesh;      // QUAD.obj
+  std::string mesh_out;  // -o OUT.obj
+  double scale = 1;      // output edge length as a multiple of the input's
+  double edge_length = 0;
+  int64_t target_faces = 0;
+  double sharp_angle = 35;
+  std::string feature_file;
+  std::string layout_out, tmesh_out, tmesh_in;
+  std::string cost = "quadratic";
+  bool coarse = false;
+  int threads = 1;
+  quant::SmoothingOptions smoothing;
+  bool verbose = false;
+  OutputOptions out;  // --json, --report FILE
+};
+
+CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& options);
+
+// Returns the exit code; throws InputError / UsageError.
+int run_requantize(const RequantizeCommandOptions& options);
+
+}  // namespace bimdf::cli

@@ -1,0 +1,106 @@
+// Quantizing a quadrangular T-mesh (tmesh.hpp) with Bi-MDF (paper §4.2): every arc gets a
+// non-negative integer length, opposite sides of every patch sum equally (so each patch is a
+// regular grid, or collapses when a side pair is 0), and every non-zero path keeps a length of
+// at least 1.
+//
+// The model (Fig. 10b): four side nodes per patch; an inner tail–tail edge between the nodes of
+// each pair of opposite sides, whose flow is the pair's common length; one edge per arc with a
+// head at the side node of each of its half-arcs' sides — two heads inside the T-mesh, one on
+// the border (an outer edge, §3.2.1). Conservation at a side node makes its side's arcs sum to
+// the pair's inner flow. Arcs have lower bound 0: zero-length arcs are allowed.
+//
+// Non-zero paths are not modelled exactly: Algorithm 2 (§4.2.3) picks a small set of arcs and
+// sides whose min-one lower bounds imply every path's — greedily, sides with the longest
+// target first, over the non-zero implication graph (arc ⊂ side/path, side ⊂ path, path ⊂
+// path, side → opposite side), deleting what each search visits so that the whole pass is
+// linear. Paths that contain no whole side are covered by one of their arcs.
+//
+// Costs: the deviation of each arc from its target, quadratic (x − t)² by default or absolute
+// |x − t|. The coarse objective (Lyon et al. 2021's) is linear instead: each arc costs, per unit
+// of length, half the target extent of each of its patches across it (the other side pair's
+// target), which approximates the total length of the layout's lines — the coarsest layout the
+// non-zero paths allow.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bimdf/problem.hpp"
+#include "bimdf/solution.hpp"
+#include "bimdf/tmesh/tmesh.hpp"
+
+namespace bimdf::tmesh {
+
+enum class DeviationCost { Quadratic, Absolute };
+
+// A side of a patch: (patch, side index 0..3).
+using SideRef = std::array<int, 2>;
+
+// Min-one constraints: arcs and sides whose length must be ≥ 1.
+struct MinOneConstraints {
+  std::vector<int> arcs;
+  std::vector<SideRef> sides;
+  int size() const { return static_cast<int>(arcs.size() + sides.size()); }
+};
+
+// Algorithm 2 on the T-mesh's nonzero_paths (`incidence` from validate_tmesh). Side target
+// lengths are their arcs' summed targets. Deterministic: ties broken by patch, side and arc id.
+MinOneConstraints greedy_min_one_constraints(const TMesh& tmesh, const TMeshIncidence& incidence);
+
+struct ArcModelOptions {
+  DeviationCost cost = DeviationCost::Quadratic;
+  bool coarse = false;  // the linear coarse objective instead of the deviation
+  // Optional, one entry per arc: −1 free, 0 fixed to 0, 1 at least 1 (empty: all free).
+  std::vector<int8_t> arc_pattern;
+};
+
+struct ArcModel {
+  Problem problem;
+  std::vector<int> arc_edge;                  // per arc: its network edge
+  std::vector<std::array<int, 2>> pair_edge;  // per patch: inner edge of sides 0/2, of 1/3
+  std::vector<std::array<int, 4>> side_node;  // per patch and side
+};
+
+// Builds the Bi-MDF problem with the min-one constraints as lower bounds of 1.
+ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
+                         const MinOneConstraints& constraints, const ArcModelOptions& options);
+
+// The arc lengths of a flow of `model`.
+std::vector<int64_t> arc_lengths(const ArcModel& model, const std::vector<int64_t>& flow);
+
+// Checks a quantization against the T-mesh, independently of any model: one length per arc,
+// all ≥ 0, opposite sides of every patch equal, every non-zero path ≥ 1. Returns "" when
+// valid, else the first violation ("patch 3: sides 0 and 2 have lengths 4 and 5").
+std::string check_quantization(const TMesh& tmesh, const std::vector<int64_t>& arc_length);
+
+struct QuantizeOptions {
+  DeviationCost cost = DeviationCost::Quadratic;
+  // Coarse layout: first the coarse objective decides which arcs are 0; then the same model
+  // with that pattern fixed (zero arcs 0, others ≥ 1) and the deviation costs gives the
+  // lengths at the T-mesh's target density.
+  bool coarse = false;
+  int threads = 1;
+  double time_limit = -1;  // seconds per solve, < 0: none
+};
+
+struct TMeshQuantization {
+  SolveStatus status = SolveStatus::Infeasible;
+  double objective = 0;         // of the (last) model solved
+  double coarse_objective = 0;  // the coarse stage's, when coarse
+  std::vector<int64_t> arc_length;
+  MinOneConstraints constraints;
+  int zero_arcs = 0;
+  int nodes = 0, edges = 0;  // of the model
+  double time_model_s = 0, time_solve_s = 0;
+  Solution solution;  // the last solve's (stats for -v)
+};
+
+// Builds the model, solves it exactly and checks the result (check_quantization; a failure
+// throws std::logic_error, it would be a bug). status Infeasible: no valid quantization
+// exists (the solver's proof is in solution.stats).
+TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                 const QuantizeOptions& options);
+
+}  // namespace bimdf::tmesh

@@ -1,0 +1,96 @@
+// The arc Bi-MDF model of a quad T-mesh (paper §4.2.1–4.2.2, Fig. 10b) and the independent
+// check of its solutions. See tmesh/quantize.hpp for the construction.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "bimdf/tmesh/quantize.hpp"
+
+namespace bimdf::tmesh {
+namespace {
+
+double side_target(const TMesh& tmesh, int patch, int side) {
+  double length = 0;
+  for (int h : tmesh.patch_sides[patch][side]) length += tmesh.arc_target[TMesh::arc_of(h)];
+  return length;
+}
+
+}  // namespace
+
+ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
+                         const MinOneConstraints& constraints, const ArcModelOptions& options) {
+  ArcModel model;
+  Problem& pb = model.problem;
+  const int np = tmesh.num_patches();
+  model.side_node.resize(np);
+  model.pair_edge.resize(np);
+  std::vector<std::array<int64_t, 2>> pair_lower(np, {0, 0});
+  for (const SideRef& s : constraints.sides) pair_lower[s[0]][s[1] % 2] = 1;
+  for (int p = 0; p < np; ++p)
+    for (int k = 0; k < 4; ++k) model.side_node[p][k] = pb.add_node(0);
+  // The pair edges carry no cost: the arcs' costs already price every length.
+  for (int p = 0; p < np; ++p)
+    for (int pair = 0; pair < 2; ++pair)
+      model.pair_edge[p][pair] =
+          pb.add_edge({model.side_node[p][pair], false}, End{model.side_node[p][pair + 2], false},
+                      pair_lower[p][pair], kInfinity, Cost::zero());
+  std::vector<int64_t> arc_lower(tmesh.num_arcs(), 0), arc_upper(tmesh.num_arcs(), kInfinity);
+  for (int a : constraints.arcs) arc_lower[a] = 1;
+  if (!options.arc_pattern.empty())
+    for (int a = 0; a < tmesh.num_arcs(); ++a) {
+      if (options.arc_pattern[a] == 0) arc_lower[a] = arc_upper[a] = 0;
+      if (options.arc_pattern[a] == 1) arc_lower[a] = std::max<int64_t>(arc_lower[a], 1);
+    }
+  model.arc_edge.resize(tmesh.num_arcs());
+  for (int a = 0; a < tmesh.num_arcs(); ++a) {
+    std::vector<End> ends;
+    double across = 0;  // the coarse weight: half the extent of each patch across the arc
+    for (int h : {2 * a, 2 * a + 1}) {
+      const int p = incidence.half_arc_patch[h];
+      if (p < 0) continue;
+      const int k = incidence.half_arc_side[h];
+      ends.push_back({model.side_node[p][k], true});
+      across += 0.5 * side_target(tmesh, p, (k + 1) % 4);
+    }
+    const double t = tmesh.arc_target[a];
+    Cost cost = options.coarse                             ? Cost::linear(std::max(across, 1e-3))
+                : options.cost == DeviationCost::Quadratic ? Cost::quad_deviation(t, 1)
+                                                           : Cost::abs_deviation(t, 1);
+    model.arc_edge[a] = ends.size() == 2
+                            ? pb.add_edge(ends[0], ends[1], arc_lower[a], arc_upper[a], cost)
+                            : pb.add_edge(ends[0], std::nullopt, arc_lower[a], arc_upper[a], cost);
+  }
+  return model;
+}
+
+std::vector<int64_t> arc_lengths(const ArcModel& model, const std::vector<int64_t>& flow) {
+  std::vector<int64_t> lengths(model.arc_edge.size());
+  for (size_t a = 0; a < lengths.size(); ++a) lengths[a] = flow[model.arc_edge[a]];
+  return lengths;
+}
+
+std::string check_quantization(const TMesh& tmesh, const std::vector<int64_t>& arc_length) {
+  if (static_cast<int>(arc_length.size()) != tmesh.num_arcs())
+    return "expected " + std::to_string(tmesh.num_arcs()) + " arc lengths, got " +
+           std::to_string(arc_length.size());
+  for (int a = 0; a < tmesh.num_arcs(); ++a)
+    if (arc_length[a] < 0)
+      return "arc " + std::to_string(a) + ": negative length " + std::to_string(arc_length[a]);
+  for (int p = 0; p < tmesh.num_patches(); ++p)
+    for (int k = 0; k < 2; ++k) {
+      const int64_t x = side_length(tmesh, p, k, arc_length);
+      const int64_t y = side_length(tmesh, p, k + 2, arc_length);
+      if (x != y)
+        return "patch " + std::to_string(p) + ": sides " + std::to_string(k) + " and " +
+               std::to_string(k + 2) + " have lengths " + std::to_string(x) + " and " +
+               std::to_string(y);
+    }
+  for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m) {
+    int64_t sum = 0;
+    for (int h : tmesh.nonzero_paths[m]) sum += arc_length[TMesh::arc_of(h)];
+    if (sum == 0) return "non-zero path " + std::to_string(m) + " has length 0";
+  }
+  return "";
+}
+
+}  // namespace bimdf::tmesh

@@ -1,0 +1,490 @@
+// collapse_and_tessellate (tmesh/collapse.hpp). Every output vertex starts as a *point*: a
+// T-mesh vertex, an interior point of an arc, or an interior grid point of a patch. Zero arcs
+// and zero-width patches identify points (union–find); the classes are the output vertices.
+// Points are numbered T-mesh vertices first, then arc points arc by arc, then patch points
+// patch by patch, so that everything below is deterministic.
+#include "bimdf/tmesh/collapse.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace bimdf::tmesh {
+namespace {
+
+using Vec3 = std::array<double, 3>;
+using Vec2 = std::array<double, 2>;
+
+// More points than this would not fit the int vertex ids of QuadMesh comfortably.
+constexpr int64_t kMaxPoints = int64_t{1} << 28;
+
+// Union–find whose representative is the smallest member (so classes do not depend on the
+// order of the unions).
+class UnionFind {
+ public:
+  explicit UnionFind(int n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a), b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+template <size_t N>
+std::array<double, N> lerp(const std::array<double, N>& a, const std::array<double, N>& b,
+                           double t) {
+  std::array<double, N> r;
+  for (size_t d = 0; d < N; ++d) r[d] = a[d] + t * (b[d] - a[d]);
+  return r;
+}
+
+// Coons patch at grid index (i, j) of a W × H grid from its four boundary curves, each given
+// at every grid index: bottom[i] (j = 0), top[i] (j = H), left[j] (i = 0), right[j] (i = W).
+// Where two curves disagree at a corner (zero arcs there), the corner is their mean.
+template <size_t N>
+std::array<double, N> coons(const std::vector<std::array<double, N>>& bottom,
+                            const std::vector<std::array<double, N>>& top,
+                            const std::vector<std::array<double, N>>& left,
+                            const std::vector<std::array<double, N>>& right, int i, int j) {
+  const int W = static_cast<int>(bottom.size()) - 1, H = static_cast<int>(left.size()) - 1;
+  const double s = double(i) / W, t = double(j) / H;
+  std::array<double, N> r;
+  for (size_t d = 0; d < N; ++d) {
+    const double c00 = (bottom[0][d] + left[0][d]) / 2, c10 = (bottom[W][d] + right[0][d]) / 2;
+    const double c01 = (top[0][d] + left[H][d]) / 2, c11 = (top[W][d] + right[H][d]) / 2;
+    r[d] = (1 - t) * bottom[i][d] + t * top[i][d] + (1 - s) * left[j][d] + s * right[j][d] -
+           ((1 - s) * (1 - t) * c00 + s * (1 - t) * c10 + (1 - s) * t * c01 + s * t * c11);
+  }
+  return r;
+}
+
+// "T-mesh vertex 3", "T-mesh vertices 3 and 7", "T-mesh vertices 3, 5 and 7".
+std::string list_ids(const std::string& one, const std::string& many, const std::vector<int>& ids) {
+  std::string s = (ids.size() == 1 ? one : many) + " ";
+  for (size_t k = 0; k < ids.size(); ++k) {
+    if (k > 0) s += k + 1 == ids.size() ? " and " : ", ";
+    s += std::to_string(ids[k]);
+  }
+  return s;
+}
+
+struct Collapser {
+  const TMesh& tm;
+  const TMeshIncidence& inc;
+  const std::vector<int64_t>& len;
+  const QuadMesh* mesh;
+
+  std::vector<std::array<int64_t, 2>> size;  // per patch: width (side 0), height (side 1)
+  std::vector<int> arc_first, patch_first;   // first interior point of each arc / patch
+  int num_points = 0;
+  std::vector<Vec3> point_position;
+  std::vector<std::vector<int>> grid;  // per non-degenerate patch: point ids, (W+1) × (H+1)
+
+  int arc_point(int a, int64_t k) const {
+    if (k == 0) return tm.arc_ends[a][0];
+    if (k == len[a]) return tm.arc_ends[a][1];
+    return arc_first[a] + static_cast<int>(k) - 1;
+  }
+  // Point k of half-arc h, counted from its tail.
+  int half_arc_point(int h, int64_t k) const {
+    const int a = TMesh::arc_of(h);
+    return arc_point(a, (h & 1) ? len[a] - k : k);
+  }
+  int64_t side_length(int p, int k) const {
+    int64_t sum = 0;
+    for (int h : tm.patch_sides[p][k]) sum += len[TMesh::arc_of(h)];
+    return sum;
+  }
+  // The points of side k of patch p by position 0..length (a zero arc puts both of its ends
+  // at one position; they are the same class, so either stands for it).
+  std::vector<int> side_points(int p, int k) const {
+    std::vector<int> out;
+    for (int h : tm.patch_sides[p][k]) {
+      const int64_t x = len[TMesh::arc_of(h)];
+      if (out.empty()) out.push_back(half_arc_point(h, 0));
+      for (int64_t i = 1; i <= x; ++i) out.push_back(half_arc_point(h, i));
+    }
+    return out;
+  }
+  bool has_grid(int p) const {
+    if (!mesh || tm.patch_grid.size() != tm.patch_sides.size() || tm.patch_grid[p].empty() ||
+        tm.patch_grid[p].width < 1 || tm.patch_grid[p].height < 1)
+      return false;
+    for (const auto& side : tm.patch_sides[p])
+      for (int h : side)
+        if (TMesh::arc_of(h) >= static_cast<int>(tm.arc_chain.size()) ||
+            tm.arc_chain[TMesh::arc_of(h)].size() < 2)
+          return false;
+    return true;
+  }
+
+  void check_input() const;
+  void number_points();
+  void place_vertices_and_arcs();
+  void place_patch_interior(int p);
+  Vec2 side_coordinate(int p, int k, int64_t position) const;
+};
+
+void Collapser::check_input() const {
+  const int na = tm.num_arcs(), np = tm.num_patches();
+  if (static_cast<int>(len.size()) != na)
+    throw std::invalid_argument(std::to_string(len.size()) + " arc lengths for " +
+                                std::to_string(na) + " arcs");
+  if (static_cast<int>(inc.half_arc_patch.size()) != 2 * na)
+    throw std::invalid_argument("the incidence does not belong to this T-mesh");
+  for (int a = 0; a < na; ++a)
+    if (len[a] < 0 || len[a] > kMaxPoints)
+      throw std::invalid_argument("arc " + std::to_string(a) + ": length " +
+                                  std::to_string(len[a]) + ", expected 0 to 2^28");
+  for (int p = 0; p < np; ++p)
+    for (int k = 0; k < 2; ++k)
+      if (side_length(p, k) != side_length(p, k + 2))
+        throw std::invalid_argument(
+            "patch " + std::to_string(p) + ": sides " + std::to_string(k) + " and " +
+            std::to_string(k + 2) + " have lengths " + std::to_string(side_length(p, k)) + " and " +
+            std::to_string(side_length(p, k + 2)) + ", opposite sides must be equal");
+}
+
+void Collapser::number_points() {
+  int64_t n = tm.num_vertices();
+  const auto grow = [&](int64_t extra) {
+    n += extra;
+    if (n > kMaxPoints)
+      throw std::invalid_argument("the quantization asks for more than 2^28 quad vertices");
+  };
+  arc_first.resize(tm.num_arcs());
+  for (int a = 0; a < tm.num_arcs(); ++a) {
+    arc_first[a] = static_cast<int>(n);
+    grow(std::max<int64_t>(len[a] - 1, 0));
+  }
+  patch_first.resize(tm.num_patches());
+  size.resize(tm.num_patches());
+  for (int p = 0; p < tm.num_patches(); ++p) {
+    size[p] = {side_length(p, 0), side_length(p, 1)};
+    patch_first[p] = static_cast<int>(n);
+    if (size[p][0] > 0 && size[p][1] > 0) grow((size[p][0] - 1) * (size[p][1] - 1));
+  }
+  num_points = static_cast<int>(n);
+}
+
+// T-mesh vertices at their mesh vertex (or their own position), arc points at their fraction
+// of the arc's chain counted in mesh edges (exact when the length equals the chain's), or of
+// the straight arc.
+void Collapser::place_vertices_and_arcs() {
+  point_position.assign(num_points, Vec3{0, 0, 0});
+  for (int v = 0; v < tm.num_vertices(); ++v) {
+    const int m =
+        v < static_cast<int>(tm.vertex_mesh_vertex.size()) ? tm.vertex_mesh_vertex[v] : -1;
+    point_position[v] =
+        mesh && m >= 0 && m < mesh->num_vertices() ? mesh->vertices[m] : tm.vertices[v];
+  }
+  for (int a = 0; a < tm.num_arcs(); ++a) {
+    const int64_t x = len[a];
+    const std::vector<int>* chain =
+        mesh && a < static_cast<int>(tm.arc_chain.size()) && tm.arc_chain[a].size() >= 2
+            ? &tm.arc_chain[a]
+            : nullptr;
+    for (int64_t k = 1; k < x; ++k) {
+      Vec3& at = point_position[arc_point(a, k)];
+      if (!chain) {
+        at = lerp(point_position[tm.arc_ends[a][0]], point_position[tm.arc_ends[a][1]],
+                  double(k) / double(x));
+        continue;
+      }
+      const int64_t n = static_cast<int64_t>(chain->size()) - 1;
+      const int64_t edge = k * n / x, rest = k * n % x;
+      at = rest == 0 ? mesh->vertices[(*chain)[edge]]
+                     : lerp(mesh->vertices[(*chain)[edge]], mesh->vertices[(*chain)[edge + 1]],
+                            double(rest) / double(x));
+    }
+  }
+}
+
+// The patch grid coordinate (u, v) of output position `position` on side k of patch p: where
+// a zero arc puts several points at one position, the middle of their coordinates.
+Vec2 Collapser::side_coordinate(int p, int k, int64_t position) const {
+  const PatchGrid& g = tm.patch_grid[p];
+  double lo = 0, hi = 0, input = 0;
+  int64_t out = 0;
+  bool found = false;
+  for (int h : tm.patch_sides[p][k]) {
+    const int a = TMesh::arc_of(h);
+    const int64_t x = len[a], n = static_cast<int64_t>(tm.arc_chain[a].size()) - 1;
+    if (position >= out && position <= out + x) {
+      const double first = x == 0 ? input : input + double(position - out) * n / double(x);
+      const double last = x == 0 ? input + n : first;
+      lo = found ? std::min(lo, first) : first;
+      hi = found ? std::max(hi, last) : last;
+      found = true;
+    }
+    out += x, input += n;
+  }
+  const double c = (lo + hi) / 2;
+  switch (k) {
+    case 0:
+      return {c, 0};
+    case 1:
+      return {double(g.width), c};
+    case 2:
+      return {g.width - c, double(g.height)};
+    default:
+      return {0, g.height - c};
+  }
+}
+
+// Interior grid points of a non-degenerate patch: a Coons patch over its sides, in the input
+// grid's coordinates (then bilinear on the input quad there) or in 3D.
+void Collapser::place_patch_interior(int p) {
+  const int W = static_cast<int>(size[p][0]), H = static_cast<int>(size[p][1]);
+  if (W < 2 || H < 2) return;
+  const std::vector<int>& ids = grid[p];
+  const auto id = [&](int i, int j) { return ids[size_t(j) * (W + 1) + i]; };
+  if (has_grid(p)) {
+    std::vector<Vec2> bottom(W + 1), top(W + 1), left(H + 1), right(H + 1);
+    for (int i = 0; i <= W; ++i)
+      bottom[i] = side_coordinate(p, 0, i), top[i] = side_coordinate(p, 2, W - i);
+    for (int j = 0; j <= H; ++j)
+      right[j] = side_coordinate(p, 1, j), left[j] = side_coordinate(p, 3, H - j);
+    const PatchGrid& g = tm.patch_grid[p];
+    for (int j = 1; j < H; ++j)
+      for (int i = 1; i < W; ++i) {
+        const Vec2 uv = coons(bottom, top, left, right, i, j);
+        const double u = std::clamp(uv[0], 0.0, double(g.width));
+        const double v = std::clamp(uv[1], 0.0, double(g.height));
+        const int i0 = std::min(static_cast<int>(u), g.width - 1);
+        const int j0 = std::min(static_cast<int>(v), g.height - 1);
+        const auto& x = mesh->vertices;
+        point_position[id(i, j)] =
+            lerp(lerp(x[g.at(i0, j0)], x[g.at(i0 + 1, j0)], u - i0),
+                 lerp(x[g.at(i0, j0 + 1)], x[g.at(i0 + 1, j0 + 1)], u - i0), v - j0);
+      }
+    return;
+  }
+  // Without a grid: the mean position of the points at each side position.
+  const auto side_positions = [&](int k) {
+    const int64_t length = size[p][k % 2];
+    std::vector<Vec3> sum(length + 1, Vec3{0, 0, 0});
+    std::vector<int> count(length + 1, 0);
+    int64_t out = 0;
+    for (int h : tm.patch_sides[p][k]) {
+      const int64_t x = len[TMesh::arc_of(h)];
+      for (int64_t i = 0; i <= x; ++i) {
+        const Vec3& q = point_position[half_arc_point(h, i)];
+        for (int d = 0; d < 3; ++d) sum[out + i][d] += q[d];
+        ++count[out + i];
+      }
+      out += x;
+    }
+    for (size_t s = 0; s < sum.size(); ++s)
+      for (int d = 0; d < 3; ++d) sum[s][d] /= count[s];
+    return sum;
+  };
+  std::vector<Vec3> bottom = side_positions(0), right = side_positions(1);
+  std::vector<Vec3> top = side_positions(2), left = side_positions(3);
+  std::reverse(top.begin(), top.end());
+  std::reverse(left.begin(), left.end());
+  for (int j = 1; j < H; ++j)
+    for (int i = 1; i < W; ++i) point_position[id(i, j)] = coons(bottom, top, left, right, i, j);
+}
+
+// The conformity checks of collapse.hpp on the finished mesh; `describe` names an output
+// vertex by what it was made of.
+template <class Describe>
+void check_result(const QuadMesh& out, const std::vector<std::array<int, 2>>& quad_cell,
+                  const std::vector<int>& class_size, const Describe& describe) {
+  const int nq = out.num_quads();
+  for (int f = 0; f < nq; ++f)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        if (out.quads[f][a] == out.quads[f][b])
+          throw CollapseError("patch " + std::to_string(out.quad_patch[f]) + ": quad (" +
+                              std::to_string(quad_cell[f][0]) + ", " +
+                              std::to_string(quad_cell[f][1]) + ") would have two corners at " +
+                              describe(out.quads[f][a]));
+  // Edges as (smaller vertex, larger vertex, quad, direction), grouped by sorting.
+  std::vector<std::tuple<int, int, int, bool>> edges;
+  edges.reserve(size_t(4) * nq);
+  for (int f = 0; f < nq; ++f)
+    for (int a = 0; a < 4; ++a) {
+      const int u = out.quads[f][a], v = out.quads[f][(a + 1) % 4];
+      edges.emplace_back(std::min(u, v), std::max(u, v), f, u < v);
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<int> closed_edges(out.num_vertices(), 0);  // edges with two quads, per vertex
+  for (size_t e = 0; e < edges.size();) {
+    size_t end = e;
+    while (end < edges.size() && std::get<0>(edges[end]) == std::get<0>(edges[e]) &&
+           std::get<1>(edges[end]) == std::get<1>(edges[e]))
+      ++end;
+    const auto [u, v, f, dir] = edges[e];
+    const std::string between = " the edge between " + describe(u) + " and " + describe(v);
+    if (end - e > 2)
+      throw CollapseError(
+          std::to_string(end - e) + " quads (patches " + std::to_string(out.quad_patch[f]) + ", " +
+          std::to_string(out.quad_patch[std::get<2>(edges[e + 1])]) + ", " +
+          std::to_string(out.quad_patch[std::get<2>(edges[e + 2])]) + ") would share" + between);
+    if (end - e == 2) {
+      const int g = std::get<2>(edges[e + 1]);
+      if (dir == std::get<3>(edges[e + 1]))
+        throw CollapseError("patches " + std::to_string(out.quad_patch[f]) + " and " +
+                            std::to_string(out.quad_patch[g]) + " would both walk" + between +
+                            " in the same direction");
+      ++closed_edges[u], ++closed_edges[v];
+    }
+    e = end;
+  }
+  // Fans: the quads at a vertex, joined where they share an edge at it.
+  std::vector<std::vector<std::pair<int, int>>> corners(out.num_vertices());  // (prev, next)
+  for (const auto& q : out.quads)
+    for (int a = 0; a < 4; ++a) corners[q[a]].push_back({q[(a + 3) % 4], q[(a + 1) % 4]});
+  for (int v = 0; v < out.num_vertices(); ++v) {
+    const auto& around = corners[v];
+    UnionFind fans(static_cast<int>(around.size()));
+    for (size_t a = 0; a < around.size(); ++a)
+      for (size_t b = 0; b < a; ++b)
+        if (around[a].first == around[b].second || around[a].second == around[b].first)
+          fans.unite(static_cast<int>(a), static_cast<int>(b));
+    int count = 0;
+    for (size_t a = 0; a < around.size(); ++a) count += fans.find(static_cast<int>(a)) == int(a);
+    if (count > 1)
+      throw CollapseError(describe(v) + " would be non-manifold: its quads form " +
+                          std::to_string(count) + " separate fans");
+    // Two quads around an interior vertex share two consecutive edges and fold onto each
+    // other; an input mesh may have such a vertex, but collapse must not make one.
+    if (around.size() == 2 && closed_edges[v] == 2 && class_size[v] > 1)
+      throw CollapseError(describe(v) + " would become an interior vertex of only two quads");
+  }
+}
+
+}  // namespace
+
+CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                      const std::vector<int64_t>& arc_length,
+                                      const QuadMesh* mesh) {
+  Collapser c{tmesh, incidence, arc_length, mesh, {}, {}, {}, 0, {}, {}};
+  c.check_input();
+  c.number_points();
+  const int np = tmesh.num_patches();
+  CollapsedMesh result;
+  UnionFind classes(c.num_points);
+  for (int a = 0; a < tmesh.num_arcs(); ++a) {
+    result.zero_arcs += arc_length[a] == 0;
+    if (arc_length[a] == 0) classes.unite(tmesh.arc_ends[a][0], tmesh.arc_ends[a][1]);
+  }
+  c.grid.resize(np);
+  for (int p = 0; p < np; ++p) {
+    const int64_t W = c.size[p][0], H = c.size[p][1];
+    std::array<std::vector<int>, 4> side;
+    for (int k = 0; k < 4; ++k) side[k] = c.side_points(p, k);
+    if (W == 0 || H == 0) {
+      // Side k (walked forward) meets side k+2 walked backwards, position by position.
+      ++result.collapsed_patches;
+      for (int k : {0, 1})
+        if (c.size[p][1 - k] == 0)
+          for (size_t s = 0; s < side[k].size(); ++s)
+            classes.unite(side[k][s], side[k + 2][side[k + 2].size() - 1 - s]);
+      if (W == 0 && H == 0)
+        for (int k = 1; k < 4; ++k) classes.unite(side[0][0], side[k][0]);
+      continue;
+    }
+    std::vector<int>& g = c.grid[p];
+    g.assign(size_t(W + 1) * (H + 1), -1);
+    const auto at = [&](int64_t i, int64_t j) -> int& { return g[size_t(j) * (W + 1) + i]; };
+    for (int64_t i = 0; i <= W; ++i) at(i, 0) = side[0][i], at(W - i, H) = side[2][i];
+    for (int64_t j = 0; j <= H; ++j) at(W, j) = side[1][j], at(0, H - j) = side[3][j];
+    int next = c.patch_first[p];
+    for (int64_t j = 1; j < H; ++j)
+      for (int64_t i = 1; i < W; ++i) at(i, j) = next++;
+  }
+  if (np > 0 && result.collapsed_patches == np)
+    throw CollapseError("every patch would collapse (width or height 0): no quad is left");
+
+  // Output vertices in order of first use by the quads, patch by patch, row by row.
+  std::vector<int> vertex_of(c.num_points, -1);
+  std::vector<std::array<int, 2>> quad_cell;
+  QuadMesh& out = result.mesh;
+  for (int p = 0; p < np; ++p) {
+    const int64_t W = c.size[p][0], H = c.size[p][1];
+    if (W == 0 || H == 0) continue;
+    const std::vector<int>& g = c.grid[p];
+    const auto vertex = [&](int64_t i, int64_t j) {
+      int& v = vertex_of[classes.find(g[size_t(j) * (W + 1) + i])];
+      if (v < 0) v = out.num_vertices(), out.vertices.push_back({0, 0, 0});
+      return v;
+    };
+    for (int64_t j = 0; j < H; ++j)
+      for (int64_t i = 0; i < W; ++i) {
+        out.quads.push_back(
+            {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+        out.quad_patch.push_back(p);
+        quad_cell.push_back({static_cast<int>(i), static_cast<int>(j)});
+      }
+  }
+
+  // Positions: every point's own, then each vertex at the mean of its points.
+  c.place_vertices_and_arcs();
+  for (int p = 0; p < np; ++p)
+    if (!c.grid[p].empty()) c.place_patch_interior(p);
+  const int nv = out.num_vertices();
+  std::vector<int> class_size(nv, 0);
+  std::vector<std::vector<int>> vertex_arcs(tmesh.num_vertices());
+  for (int a = 0; a < tmesh.num_arcs(); ++a)
+    for (int v : tmesh.arc_ends[a]) vertex_arcs[v].push_back(a);
+  result.origin.resize(nv);
+  const auto add_patches_of_arc = [&](CollapsedVertex& o, int a) {
+    for (int h : {2 * a, 2 * a + 1})
+      if (incidence.half_arc_patch[h] >= 0) o.patches.push_back(incidence.half_arc_patch[h]);
+  };
+  for (int q = 0; q < c.num_points; ++q) {
+    const int v = vertex_of[classes.find(q)];
+    if (v < 0) continue;
+    ++class_size[v];
+    for (int d = 0; d < 3; ++d) out.vertices[v][d] += c.point_position[q][d];
+    CollapsedVertex& o = result.origin[v];
+    if (q < tmesh.num_vertices()) {
+      o.tmesh_vertices.push_back(q);
+      for (int a : vertex_arcs[q]) o.arcs.push_back(a), add_patches_of_arc(o, a);
+    } else if (q < (np > 0 ? c.patch_first[0] : c.num_points)) {
+      const int a = static_cast<int>(std::upper_bound(c.arc_first.begin(), c.arc_first.end(), q) -
+                                     c.arc_first.begin()) -
+                    1;
+      o.arcs.push_back(a), add_patches_of_arc(o, a);
+    } else {
+      o.patches.push_back(
+          static_cast<int>(std::upper_bound(c.patch_first.begin(), c.patch_first.end(), q) -
+                           c.patch_first.begin() - 1));
+    }
+  }
+  for (int v = 0; v < nv; ++v) {
+    for (int d = 0; d < 3; ++d) out.vertices[v][d] /= class_size[v];
+    CollapsedVertex& o = result.origin[v];
+    for (std::vector<int>* ids : {&o.patches, &o.arcs, &o.tmesh_vertices}) {
+      std::sort(ids->begin(), ids->end());
+      ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
+    }
+  }
+  const auto describe = [&](int v) {
+    const CollapsedVertex& o = result.origin[v];
+    if (!o.tmesh_vertices.empty())
+      return list_ids("T-mesh vertex", "T-mesh vertices", o.tmesh_vertices);
+    if (!o.arcs.empty()) return "a point of " + list_ids("arc", "arcs", o.arcs);
+    return "a point inside " + list_ids("patch", "patches", o.patches);
+  };
+  check_result(out, quad_cell, class_size, describe);
+  return result;
+}
+
+}  // namespace bimdf::tmesh

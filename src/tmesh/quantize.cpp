@@ -1,0 +1,64 @@
+// quantize_tmesh (tmesh/quantize.hpp): Algorithm 2, the arc model, the exact solve, the check —
+// twice for a coarse layout (the coarse objective picks the zero arcs, the deviation sets the
+// others' lengths).
+#include "bimdf/tmesh/quantize.hpp"
+
+#include <stdexcept>
+
+#include "bimdf/solve.hpp"
+#include "core/stopwatch.hpp"
+
+namespace bimdf::tmesh {
+namespace {
+
+// Solves `model` exactly; fills status, objective, solution and lengths of `result`.
+void solve_model(const ArcModel& model, const QuantizeOptions& options, TMeshQuantization& result) {
+  detail::Stopwatch t;
+  Solver solver(model.problem);
+  solver.threads(options.threads);
+  if (options.time_limit >= 0) solver.time_limit(options.time_limit);
+  result.status = solver.run();
+  result.time_solve_s += t.lap();
+  result.solution = solver.solution();
+  result.nodes = model.problem.num_nodes();
+  result.edges = model.problem.num_edges();
+  if (result.status != SolveStatus::Optimal && result.status != SolveStatus::Feasible) return;
+  result.objective = result.solution.objective;
+  result.arc_length = arc_lengths(model, result.solution.flow);
+}
+
+}  // namespace
+
+TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                 const QuantizeOptions& options) {
+  TMeshQuantization result;
+  detail::Stopwatch t;
+  result.constraints = greedy_min_one_constraints(tmesh, incidence);
+  ArcModelOptions model_options;
+  model_options.cost = options.cost;
+  model_options.coarse = options.coarse;
+  ArcModel model = build_arc_model(tmesh, incidence, result.constraints, model_options);
+  result.time_model_s = t.lap();
+  solve_model(model, options, result);
+  if (options.coarse && !result.arc_length.empty()) {
+    result.coarse_objective = result.objective;
+    t.lap();
+    model_options.coarse = false;
+    model_options.arc_pattern.resize(tmesh.num_arcs());
+    for (int a = 0; a < tmesh.num_arcs(); ++a)
+      model_options.arc_pattern[a] = result.arc_length[a] > 0 ? 1 : 0;
+    model = build_arc_model(tmesh, incidence, result.constraints, model_options);
+    result.time_model_s += t.lap();
+    solve_model(model, options, result);
+    // The coarse solution itself satisfies the fixed pattern: this stage cannot be infeasible.
+    if (result.arc_length.empty())
+      throw std::logic_error("coarse quantization: the fixed zero pattern became infeasible");
+  }
+  if (result.arc_length.empty()) return result;
+  if (const std::string error = check_quantization(tmesh, result.arc_length); !error.empty())
+    throw std::logic_error("quantization failed its check: " + error);
+  for (int64_t x : result.arc_length) result.zero_arcs += x == 0;
+  return result;
+}
+
+}  // namespace bimdf::tmesh

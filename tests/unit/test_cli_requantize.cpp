@@ -1,0 +1,128 @@
+// `bimdf requantize` end to end: quad meshes written to OBJ, the CLI's JSON report and OBJ
+// output read back and measured independently (metrics.hpp), bad input with exact messages.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "bimdf/metrics.hpp"
+#include "cli_fixture.hpp"
+#include "tmesh_fixtures.hpp"
+
+namespace bimdf::testing {
+namespace {
+
+using nlohmann::json;
+
+class Requantize : public CliFixture {
+ protected:
+  std::string write_mesh(const std::string& name, const QuadMesh& mesh) const {
+    std::ostringstream obj;
+    write_obj(obj, mesh);
+    return write(name, obj.str());
+  }
+  // Runs requantize with `args` on `mesh`, expects exit 0, returns the JSON report.
+  json requantize(const QuadMesh& mesh, const std::string& args) {
+    const std::string in = write_mesh("in.obj", mesh);
+    const CliRun r = run("requantize " + in + " -o " + path("out.obj") + " --json " + args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    if (r.exit_code != 0) return json::object();
+    return json::parse(r.out);
+  }
+  QuadMesh output() const { return read_obj_quads(path("out.obj")); }
+};
+
+TEST_F(Requantize, GridKeepsOnePatchAndScalesItsQuads) {
+  const QuadMesh grid = test::grid_mesh(6, 4);
+  json j = requantize(grid, "");
+  EXPECT_EQ(j["status"], "optimal");
+  EXPECT_EQ(j["tmesh_patches"], 1);
+  EXPECT_EQ(j["quads"], 24);
+  EXPECT_EQ(output().num_quads(), 24);
+  j = requantize(grid, "--scale 0.5");
+  EXPECT_EQ(j["quads"], 96);
+  const QuadMeshMetrics m = measure_quad_mesh(output());
+  EXPECT_EQ(m.faces, 96);
+  EXPECT_EQ(m.boundary_edges, 2 * (12 + 8));
+  EXPECT_EQ(m.inverted, 0);
+  EXPECT_TRUE(m.manifold());
+}
+
+TEST_F(Requantize, SubdividedCubeCoarsensToSixPatches) {
+  for (int level = 1; level <= 4; ++level) {
+    const json j = requantize(test::subdivided_cube(level), "--coarse");
+    ASSERT_EQ(j["status"], "optimal") << "level " << level;
+    EXPECT_EQ(j["layout_patches"], 6) << "level " << level;
+    EXPECT_EQ(j["singularities_out"]["inside"], json({{"3", 8}})) << "level " << level;
+    const QuadMeshMetrics m = measure_quad_mesh(output());
+    EXPECT_TRUE(m.manifold());
+    EXPECT_EQ(m.euler_characteristic, 2);
+    EXPECT_EQ(m.inverted, 0);
+    EXPECT_EQ(m.base_complex_faces, 6);
+  }
+}
+
+TEST_F(Requantize, ThinStripCollapses) {
+  const QuadMesh mesh = test::thin_strip_mesh();
+  const json j = requantize(mesh, "--scale 2");
+  ASSERT_EQ(j["status"], "optimal");
+  EXPECT_GT(j["zero_arcs"].get<int>(), 0);
+  EXPECT_GE(j["collapsed_patches"].get<int>(), 1);
+  // Same singularities (the two reflex corners and the convex ones) and border.
+  EXPECT_EQ(j["singularities_out"], j["singularities_in"]);
+  const QuadMeshMetrics m = measure_quad_mesh(output());
+  EXPECT_TRUE(m.manifold());
+  EXPECT_EQ(m.inverted, 0);
+  EXPECT_EQ(m.euler_characteristic, 1);
+}
+
+TEST_F(Requantize, TMeshRoundTripGivesTheSameResult) {
+  const QuadMesh mesh = test::random_quad_mesh(3);
+  const std::string in = write_mesh("in.obj", mesh);
+  CliRun r =
+      run("requantize " + in + " -o " + path("a.obj") + " --json --tmesh-out " + path("t.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json a = json::parse(r.out);
+  r = run("requantize " + in + " -o " + path("b.obj") + " --json --tmesh-in " + path("t.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json b = json::parse(r.out);
+  EXPECT_EQ(a["objective"], b["objective"]);
+  EXPECT_EQ(a["quads"], b["quads"]);
+  EXPECT_EQ(slurp(path("a.obj")).size(), slurp(path("b.obj")).size());
+}
+
+TEST_F(Requantize, ClosedGridWithoutSingularitiesIsRefused) {
+  const std::string in = write_mesh("torus.obj", test::torus_mesh(12, 12, 3));
+  const CliRun r = run("requantize " + in + " -o " + path("out.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("has no irregular vertex, border or feature"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("out.obj")));
+}
+
+TEST_F(Requantize, BadInput) {
+  const std::string tri = write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  CliRun r = run("requantize " + tri + " -o " + path("out.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "error: " + tri + ":4: face 0 has 3 vertices, expected a quad\n");
+  const std::string empty = write("empty.obj", "");
+  r = run("requantize " + empty + " -o " + path("out.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "error: " + empty + ": no faces: expected an all-quad mesh\n");
+  r = run("requantize " + path("missing.obj") + " -o " + path("out.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("missing.obj"), std::string::npos) << r.err;
+  const std::string grid = write_mesh("grid.obj", test::grid_mesh(2, 2));
+  const std::string before = slurp(grid);
+  r = run("requantize " + grid + " -o " + grid);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "error: refusing to overwrite the input " + grid + "\n");
+  EXPECT_EQ(slurp(grid), before);
+  r = run("requantize " + grid);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "error: nothing to write: give -o OUT.obj (or --layout-out, --tmesh-out, --json)\n");
+  EXPECT_FALSE(fs::exists(path("out.obj")));
+}
+
+}  // namespace
+}  // namespace bimdf::testing
