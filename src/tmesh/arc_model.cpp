@@ -28,12 +28,21 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
   for (const SideRef& s : constraints.sides) pair_lower[s[0]][s[1] % 2] = 1;
   for (int p = 0; p < np; ++p)
     for (int k = 0; k < 4; ++k) model.side_node[p][k] = pb.add_node(0);
-  // The pair edges carry no cost: the arcs' costs already price every length.
+  // A pair edge's flow is the patch's width (or height): its deviation from the mean of the
+  // two sides' targets is priced too, because the arcs alone cannot see a side whose many
+  // short arcs all round the same way (seven arcs of target 0.5 cost the same at 0 as at 1
+  // each, but the side of target 3.5 is then 0 or 7).
   for (int p = 0; p < np; ++p)
-    for (int pair = 0; pair < 2; ++pair)
-      model.pair_edge[p][pair] =
-          pb.add_edge({model.side_node[p][pair], false}, End{model.side_node[p][pair + 2], false},
-                      pair_lower[p][pair], kInfinity, Cost::zero());
+    for (int pair = 0; pair < 2; ++pair) {
+      const double t = 0.5 * (side_target(tmesh, p, pair) + side_target(tmesh, p, pair + 2));
+      const Cost cost = options.coarse ? Cost::zero()
+                        : options.cost == DeviationCost::Quadratic
+                            ? Cost::quad_deviation(t, options.side_weight)
+                            : Cost::abs_deviation(t, options.side_weight);
+      model.pair_edge[p][pair] = pb.add_edge(
+          {model.side_node[p][pair], false}, End{model.side_node[p][pair + 2], false},
+          pair_lower[p][pair], kInfinity, options.side_weight > 0 ? cost : Cost::zero());
+    }
   std::vector<int64_t> arc_lower(tmesh.num_arcs(), 0), arc_upper(tmesh.num_arcs(), kInfinity);
   for (int a : constraints.arcs) arc_lower[a] = 1;
   if (!options.arc_pattern.empty())

@@ -39,8 +39,7 @@ std::vector<RegionGrid> patches_of(const QuadMeshTopology& topo, const std::vect
   for (const std::vector<int>& faces : detail::cut_regions(topo, cut)) {
     ++scratch.stamp;
     const detail::RegionBorder border = detail::region_border(topo, cut, faces, scratch);
-    detail::RegionRectangle r =
-        detail::region_rectangle(topo, cut, faces, border, scratch, source);
+    detail::RegionRectangle r = detail::region_rectangle(topo, cut, faces, border, scratch, source);
     if (r.repeat[0] >= 0) {
       // complete_to_rectangles cuts such regions; reaching here is a bug, but say what it is.
       const int w1 = r.width + 1;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "bimdf/error.hpp"
 
@@ -199,6 +200,8 @@ CompletionCuts complete_to_rectangles(const QuadMeshTopology& topo, std::vector<
   auto walk = [&](int at, int e, bool mark) {
     std::vector<int> line{at};
     while (true) {
+      if (line.size() > size_t(topo.num_edges()))  // a straight line never repeats an edge
+        throw std::logic_error("complete_to_rectangles: a cut runs on forever");
       at = topo.other_vertex(e, at);
       line.push_back(at);
       const bool reached = at == line.front() || has_cut_edge(at);
@@ -240,9 +243,9 @@ CompletionCuts complete_to_rectangles(const QuadMeshTopology& topo, std::vector<
       // reaches the other.
       std::vector<int> loop = b.loops[0];
       const size_t L = loop.size(), half = L / 2;
-      std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end(), [&](int x, int y) {
-                    return topo.tail(x) < topo.tail(y);
-                  }),
+      std::rotate(loop.begin(),
+                  std::min_element(loop.begin(), loop.end(),
+                                   [&](int x, int y) { return topo.tail(x) < topo.tail(y); }),
                   loop.end());
       auto across = [&](size_t i) {
         return topo.edge(QuadMeshTopology::next(loop[(i + L - 1) % L]));

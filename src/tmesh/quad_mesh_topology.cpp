@@ -176,8 +176,7 @@ std::vector<std::vector<int>> cut_regions(const QuadMeshTopology& topo,
   return regions;
 }
 
-int turn_at_head(const QuadMeshTopology& topo, const std::vector<uint8_t>& cut, int h,
-                 int& quads) {
+int turn_at_head(const QuadMeshTopology& topo, const std::vector<uint8_t>& cut, int h, int& quads) {
   int c = QuadMeshTopology::next(h);
   quads = 1;
   while (!cut[topo.edge(c)] && quads <= topo.valence(topo.head(h))) {

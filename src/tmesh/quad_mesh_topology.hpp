@@ -105,8 +105,7 @@ std::vector<std::vector<int>> cut_regions(const QuadMeshTopology& topo,
 // From boundary half-edge h (cut, its quad in the region), around its head through the
 // region's quads to the next boundary half-edge; `quads` counts the quads passed (1 at a
 // convex corner, 2 on a straight border, 3 at a reflex corner of a regular vertex).
-int turn_at_head(const QuadMeshTopology& topo, const std::vector<uint8_t>& cut, int h,
-                 int& quads);
+int turn_at_head(const QuadMeshTopology& topo, const std::vector<uint8_t>& cut, int h, int& quads);
 
 // A region's border: its closed curves as boundary half-edges in walking order (region on
 // the left), its convex corners and reflex turns.

@@ -37,6 +37,7 @@ TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incid
   ArcModelOptions model_options;
   model_options.cost = options.cost;
   model_options.coarse = options.coarse;
+  model_options.side_weight = options.side_weight;
   ArcModel model = build_arc_model(tmesh, incidence, result.constraints, model_options);
   result.time_model_s = t.lap();
   solve_model(model, options, result);

@@ -443,8 +443,9 @@ TEST(TMeshSmoothing, KeepsTheBorderAndNeverInverts) {
     const QuadMesh before = out.mesh;
     smooth_requantized(g.mesh, t, inc, {}, {}, out, quant::SmoothingOptions{});
     EXPECT_EQ(out.mesh.quads, before.quads);
-    if (rects == kBorderStrip)  // the merged border starts half a strip inside
+    if (rects == kBorderStrip) {  // the merged border starts half a strip inside
       EXPECT_GT(border_deviation(before, g.mesh), 0.4);
+    }
     EXPECT_LT(border_deviation(out.mesh, g.mesh), 1e-9);
     const TriangleMesh surface = requantization_layout(g.mesh, t, inc, {}, {}).mesh;
     const QuadMeshMetrics m = measure_quad_mesh(out.mesh, &surface);
@@ -744,7 +745,9 @@ TEST(TMeshCollapseQuantized, CollapseIsConformingOrRefused) {
         collapsed += kept && out.collapsed_patches > 0;
         smooth_requantized(mesh, t, inc, traced.feature_edges, traced.feature_corners, out,
                            quant::SmoothingOptions{});
-        if (kept) EXPECT_EQ(measure_quad_mesh(out.mesh).inverted, 0);
+        if (kept) {
+          EXPECT_EQ(measure_quad_mesh(out.mesh).inverted, 0);
+        }
         EXPECT_LT(border_deviation(out.mesh, mesh), 1e-9);
         EXPECT_NO_THROW(conforming_layout(out.mesh));
       }

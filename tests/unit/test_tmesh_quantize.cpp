@@ -107,26 +107,43 @@ bool implies_path(const TMesh& t, const MinOneConstraints& c, const std::vector<
 // Σ side k = Σ side k+2 per patch, and either Algorithm 2's constraints (x_a ≥ 1, Σ side ≥ 1)
 // or every non-zero path's Σ x ≥ 1. The cost (x − t)² or |x − t| through an epigraph variable
 // per arc, exact at integers. Returns NaN when infeasible.
-double milp_optimum(const TMesh& t, DeviationCost cost, const MinOneConstraints* constraints,
-                    int cap) {
+double milp_optimum(const TMesh& t, DeviationCost cost, double side_weight,
+                    const MinOneConstraints* constraints, int cap) {
   std::unique_ptr<Cbc_Model, void (*)(Cbc_Model*)> model(Cbc_newModel(), Cbc_deleteModel);
   Cbc_Model* m = model.get();
   Cbc_setLogLevel(m, 0);
   Cbc_setAllowableGap(m, 0.0);
   Cbc_setAllowableFractionGap(m, 0.0);
-  const int n = t.num_arcs();
+  // Columns: arc lengths x_a, then one width w per patch and side pair (a patch's side 0 / 2
+  // or 1 / 3 length, bound to both sides' sums below), then an epigraph variable for each.
+  const int n = t.num_arcs(), np = t.num_patches(), vars = n + 2 * np;
+  const int width_cap = cap * n;
   for (int a = 0; a < n; ++a) Cbc_addCol(m, "", 0, cap, 0, 1, 0, nullptr, nullptr);
-  for (int a = 0; a < n; ++a) Cbc_addCol(m, "", 0, 1e30, 1, 0, 0, nullptr, nullptr);
-  const auto c = [&](int a, double x) {
-    const double d = x - t.arc_target[a];
-    return cost == DeviationCost::Quadratic ? d * d : std::fabs(d);
+  for (int w = 0; w < 2 * np; ++w) Cbc_addCol(m, "", 0, width_cap, 0, 1, 0, nullptr, nullptr);
+  for (int v = 0; v < vars; ++v) Cbc_addCol(m, "", 0, 1e30, 1, 0, 0, nullptr, nullptr);
+  std::vector<double> target(vars), weight(vars, 1);
+  for (int a = 0; a < n; ++a) target[a] = t.arc_target[a];
+  const auto side_target = [&](int p, int k) {
+    double sum = 0;
+    for (int h : t.patch_sides[p][k]) sum += t.arc_target[TMesh::arc_of(h)];
+    return sum;
   };
-  for (int a = 0; a < n; ++a)
-    for (int k = 0; k < cap; ++k) {  // epigraph: y_a ≥ c(k) + (c(k+1) − c(k))(x_a − k)
-      const double slope = c(a, k + 1) - c(a, k);
-      int cols[2] = {n + a, a};
+  for (int p = 0; p < np; ++p)
+    for (int k = 0; k < 2; ++k) {
+      target[n + 2 * p + k] = 0.5 * (side_target(p, k) + side_target(p, k + 2));
+      weight[n + 2 * p + k] = side_weight;
+    }
+  const auto c = [&](int v, double x) {
+    const double d = x - target[v];
+    return weight[v] * (cost == DeviationCost::Quadratic ? d * d : std::fabs(d));
+  };
+  for (int v = 0; v < vars; ++v)
+    for (int k = 0; k < (v < n ? cap : width_cap); ++k) {
+      // epigraph: y_v ≥ c(k) + (c(k+1) − c(k))(x_v − k)
+      const double slope = c(v, k + 1) - c(v, k);
+      int cols[2] = {vars + v, v};
       double coefs[2] = {1, -slope};
-      Cbc_addRow(m, "", 2, cols, coefs, 'G', c(a, k) - slope * k);
+      Cbc_addRow(m, "", 2, cols, coefs, 'G', c(v, k) - slope * k);
     }
   const auto add_sum = [&](const std::vector<std::pair<int, double>>& terms, char sense,
                            double rhs) {
@@ -135,11 +152,10 @@ double milp_optimum(const TMesh& t, DeviationCost cost, const MinOneConstraints*
     for (auto [a, w] : terms) cols.push_back(a), coefs.push_back(w);
     Cbc_addRow(m, "", static_cast<int>(cols.size()), cols.data(), coefs.data(), sense, rhs);
   };
-  for (int p = 0; p < t.num_patches(); ++p)
-    for (int k = 0; k < 2; ++k) {
-      std::vector<std::pair<int, double>> terms;
+  for (int p = 0; p < np; ++p)
+    for (int k = 0; k < 4; ++k) {  // side k's arcs sum to its pair's width
+      std::vector<std::pair<int, double>> terms{{n + 2 * p + k % 2, -1}};
       for (int h : t.patch_sides[p][k]) terms.push_back({TMesh::arc_of(h), 1});
-      for (int h : t.patch_sides[p][k + 2]) terms.push_back({TMesh::arc_of(h), -1});
       add_sum(terms, 'E', 0);
     }
   if (constraints) {
@@ -161,7 +177,7 @@ double milp_optimum(const TMesh& t, DeviationCost cost, const MinOneConstraints*
   if (!Cbc_isProvenOptimal(m)) throw std::runtime_error("CBC did not prove optimality");
   const double* x = Cbc_getColSolution(m);
   double objective = 0;
-  for (int a = 0; a < n; ++a) objective += c(a, std::round(x[a]));
+  for (int v = 0; v < vars; ++v) objective += c(v, std::round(x[v]));
   return objective;
 }
 
@@ -192,14 +208,15 @@ TEST(TMeshQuantize, OptimumEqualsTheMilpOracle) {
     const TMeshIncidence inc = validate_tmesh(t);
     QuantizeOptions o;
     o.cost = trial % 2 ? DeviationCost::Absolute : DeviationCost::Quadratic;
+    o.side_weight = trial % 3 == 0 ? 0.0 : 1.0 + trial % 5;
     const TMeshQuantization q = quantize_tmesh(t, inc, o);
     ASSERT_EQ(q.status, SolveStatus::Optimal) << "trial " << trial;
     ASSERT_EQ(check_quantization(t, q.arc_length), "") << "trial " << trial;
-    const double oracle = milp_optimum(t, o.cost, &q.constraints, 12);
+    const double oracle = milp_optimum(t, o.cost, o.side_weight, &q.constraints, 12);
     ASSERT_TRUE(testing::relatively_close(q.objective, oracle))
         << "trial " << trial << ": " << q.objective << " vs CBC " << oracle;
     // Algorithm 2 only shrinks the feasible set: the exact path rows can do no worse.
-    const double exact_paths = milp_optimum(t, o.cost, nullptr, 12);
+    const double exact_paths = milp_optimum(t, o.cost, o.side_weight, nullptr, 12);
     ASSERT_LE(exact_paths, q.objective + 1e-9) << "trial " << trial;
     collapsed += q.zero_arcs > 0;
   }

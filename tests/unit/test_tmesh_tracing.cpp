@@ -48,7 +48,8 @@ std::string check_traced(const QuadMesh& mesh, const TracedTMesh& r, double dens
   // Patches: grids of mesh quads, oriented like the mesh, partitioning it.
   std::map<std::pair<int, int>, int> directed_edge_face;
   for (int f = 0; f < mesh.num_quads(); ++f)
-    for (int k = 0; k < 4; ++k) directed_edge_face[{mesh.quads[f][k], mesh.quads[f][(k + 1) % 4]}] = f;
+    for (int k = 0; k < 4; ++k)
+      directed_edge_face[{mesh.quads[f][k], mesh.quads[f][(k + 1) % 4]}] = f;
   std::vector<int> face_patch(mesh.num_quads(), -1);
   std::set<std::pair<int, int>> arc_edges;
   for (const auto& chain : tm.arc_chain)
@@ -60,21 +61,26 @@ std::string check_traced(const QuadMesh& mesh, const TracedTMesh& r, double dens
     const PatchGrid& g = tm.patch_grid[p];
     if (g.width < 1 || g.height < 1) return "patch " + std::to_string(p) + ": empty grid";
     std::set<int> distinct(g.vertices.begin(), g.vertices.end());
-    if (distinct.size() != g.vertices.size()) return "patch " + std::to_string(p) + ": repeated vertex";
+    if (distinct.size() != g.vertices.size())
+      return "patch " + std::to_string(p) + ": repeated vertex";
     for (int j = 0; j < g.height; ++j)
       for (int i = 0; i < g.width; ++i) {
-        const std::array<int, 4> cell{g.at(i, j), g.at(i + 1, j), g.at(i + 1, j + 1), g.at(i, j + 1)};
+        const std::array<int, 4> cell{g.at(i, j), g.at(i + 1, j), g.at(i + 1, j + 1),
+                                      g.at(i, j + 1)};
         const auto it = directed_edge_face.find({cell[0], cell[1]});
-        if (it == directed_edge_face.end()) return "patch " + std::to_string(p) + ": cell not a quad";
+        if (it == directed_edge_face.end())
+          return "patch " + std::to_string(p) + ": cell not a quad";
         const auto& q = mesh.quads[it->second];
         const int k0 = static_cast<int>(std::find(q.begin(), q.end(), cell[0]) - q.begin());
         for (int k = 0; k < 4; ++k)
           if (q[(k0 + k) % 4] != cell[k]) return "patch " + std::to_string(p) + ": cell not a quad";
-        if (face_patch[it->second] >= 0) return "quad " + std::to_string(it->second) + " in two patches";
+        if (face_patch[it->second] >= 0)
+          return "quad " + std::to_string(it->second) + " in two patches";
         face_patch[it->second] = p;
         ++area;
         // Edges inside the rectangle are on no arc; its border edges are.
-        if (on_arc(cell[0], cell[1]) != (j == 0) || on_arc(cell[1], cell[2]) != (i == g.width - 1) ||
+        if (on_arc(cell[0], cell[1]) != (j == 0) ||
+            on_arc(cell[1], cell[2]) != (i == g.width - 1) ||
             on_arc(cell[2], cell[3]) != (j == g.height - 1) || on_arc(cell[3], cell[0]) != (i == 0))
           return "patch " + std::to_string(p) + ": arcs do not follow the rectangle's border";
       }
@@ -92,7 +98,8 @@ std::string check_traced(const QuadMesh& mesh, const TracedTMesh& r, double dens
   for (int s : r.seeds)
     if (!tverts.count(s)) return "seed " + std::to_string(s) + " is no T-mesh vertex";
   // Traces: the simple one is a prefix of the extended one; the M1 paths follow them.
-  if (r.trace_vertices.size() != size_t(r.traces) || r.extended_trace_vertices.size() != size_t(r.traces))
+  if (r.trace_vertices.size() != size_t(r.traces) ||
+      r.extended_trace_vertices.size() != size_t(r.traces))
     return "trace counts differ";
   for (int t = 0; t < r.traces; ++t) {
     const auto& s = r.trace_vertices[t];
@@ -255,6 +262,27 @@ TEST(TraceTMesh, CylinderIsCutInTwo) {
   EXPECT_EQ(r.tmesh.num_arcs(), 6);
 }
 
+TEST(TraceTMesh, RingCrossedOnceIsCutAgain) {
+  // An open 12 × 11 tube with one feature line along it (column 0): a single region whose
+  // rectangle is glued to itself along that line; it is cut again half-way round.
+  QuadMesh tube = test::torus_mesh(12, 12);
+  tube.quads.resize(12 * 11);
+  TraceOptions o;
+  for (int y = 0; y < 11; ++y) o.feature_edges.push_back({12 * y, 12 * (y + 1)});
+  const TracedTMesh r = trace_tmesh(tube, o, "tube");
+  ASSERT_EQ(check_traced(tube, r, 1), "");
+  EXPECT_EQ(r.feature_corners, (std::vector<int>{0, 132}));
+  EXPECT_EQ(r.cylinder_cuts, 1);
+  EXPECT_TRUE(r.cylinder_half_loops.empty());
+  ASSERT_EQ(r.tmesh.num_patches(), 2);
+  for (const auto& g : r.tmesh.patch_grid)
+    EXPECT_EQ(std::make_pair(std::min(g.width, g.height), std::max(g.width, g.height)),
+              std::make_pair(6, 11));
+  ASSERT_EQ(r.trace_vertices.size(), 1u);
+  EXPECT_EQ(r.trace_vertices[0].size(), 12u);
+  EXPECT_EQ(r.trace_vertices[0].front() % 12, 6);
+}
+
 TEST(TraceTMesh, TubesBetweenFeatureLoopsAreCut) {
   // Rows y = 0 and y = 6 of a 16 × 12 torus given as features: two annuli, four rectangles.
   const QuadMesh torus = test::torus_mesh(16, 12, 0);
@@ -299,7 +327,7 @@ TEST(TraceTMesh, ClosedComponentBesideAnOpenOneIsRefused) {
 
 TEST(TraceTMesh, RandomMeshes) {
   const int count = bimdf::testing::scaled(240);
-  int with_traces = 0, closed = 0, thin = 0;
+  int with_traces = 0, not_planar = 0, thin = 0, with_cuts = 0;
   for (int seed = 0; seed < count; ++seed) {
     std::string what;
     const QuadMesh mesh = test::random_quad_mesh(seed, &what);
@@ -322,13 +350,17 @@ TEST(TraceTMesh, RandomMeshes) {
     for (const auto& t : r.trace_vertices) on_traces += static_cast<int>(t.size()) - 1;
     EXPECT_GE(r.extended_trace_edges, on_traces);
     with_traces += r.traces > 0;
-    closed += what.find("prism") != std::string::npos;
+    not_planar += what.find("gonal") != std::string::npos;
+    with_cuts += r.cylinder_cuts > 0;
     for (const auto& g : r.tmesh.patch_grid) thin += std::min(g.width, g.height) == 1;
   }
   // The fixtures exercise what they are meant to.
   EXPECT_GT(with_traces, count / 2);
-  EXPECT_GT(closed, count / 8);
+  EXPECT_GT(not_planar, count / 8);
   EXPECT_GT(thin, 0);
+  if (count >= 200) {
+    EXPECT_GT(with_cuts, 0);
+  }
 }
 
 TEST(TraceTMesh, SharpFold) {
@@ -379,7 +411,8 @@ TEST(TraceTMesh, FeatureCurveEndsAndTurns) {
   // From the border at (3, 0) up to (3, 2), then right to (5, 2): an end on the border, a
   // turn at (3, 2), an end inside at (5, 2).
   TraceOptions o;
-  o.feature_edges = {{v(3, 0), v(3, 1)}, {v(3, 1), v(3, 2)}, {v(3, 2), v(4, 2)}, {v(4, 2), v(5, 2)}};
+  o.feature_edges = {
+      {v(3, 0), v(3, 1)}, {v(3, 1), v(3, 2)}, {v(3, 2), v(4, 2)}, {v(4, 2), v(5, 2)}};
   const TracedTMesh r = trace_tmesh(mesh, o, "grid");
   ASSERT_EQ(check_traced(mesh, r, 1), "");
   EXPECT_EQ(r.feature_corners, (std::vector<int>{v(3, 0), v(3, 2), v(5, 2)}));

@@ -94,22 +94,26 @@ PolyMesh random_planar_polygons(Random& rng, std::string& summary) {
   return poly;
 }
 
-PolyMesh prism(int n) {
+// An n-gonal prism of `rings` stacked rings of side quads, with or without its caps.
+PolyMesh prism(int n, int rings, bool bottom_cap, bool top_cap) {
   PolyMesh poly;
-  for (int level = 0; level < 2; ++level)
+  for (int level = 0; level <= rings; ++level)
     for (int i = 0; i < n; ++i) {
       const double t = 2 * std::numbers::pi * i / n;
-      poly.vertices.push_back({std::cos(t), std::sin(t), 1.5 * level});
+      poly.vertices.push_back({std::cos(t), std::sin(t), 1.5 * level / rings});
+    }
+  for (int level = 0; level < rings; ++level)
+    for (int i = 0; i < n; ++i) {
+      const int a = level * n + i, b = level * n + (i + 1) % n;
+      poly.faces.push_back({a, b, b + n, a + n});
     }
   std::vector<int> bottom, top;
   for (int i = 0; i < n; ++i) {
     bottom.push_back(n - 1 - i);
-    top.push_back(n + i);
-    const int j = (i + 1) % n;
-    poly.faces.push_back({i, j, n + j, n + i});
+    top.push_back(rings * n + i);
   }
-  poly.faces.push_back(bottom);
-  poly.faces.push_back(top);
+  if (bottom_cap) poly.faces.push_back(bottom);
+  if (top_cap) poly.faces.push_back(top);
   return poly;
 }
 
@@ -142,8 +146,8 @@ QuadMesh torus_mesh(int w, int h, int shift) {
     for (int x = 0; x < w; ++x) {
       const double u = 2 * std::numbers::pi * (x + double(shift) * y / h) / w;
       const double v = 2 * std::numbers::pi * y / h;
-      m.vertices.push_back({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
-                            r * std::sin(v)});
+      m.vertices.push_back({(R + r * std::cos(v)) * std::cos(u),
+                            (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
     }
   auto vid = [&](int x, int y) {
     if (y == h) {
@@ -216,8 +220,9 @@ QuadMesh catmull_clark(const PolyMesh& mesh) {
       out.vertices[v] = p;  // unused vertex: kept, still unused
     } else if (border_at[v] == 0) {
       const double n = edges_at[v];
-      out.vertices[v] = add(add(scale(face_sum[v], 1.0 / (n * n)), scale(mid_sum[v], 2.0 / (n * n))),
-                            scale(p, (n - 3) / n));
+      out.vertices[v] =
+          add(add(scale(face_sum[v], 1.0 / (n * n)), scale(mid_sum[v], 2.0 / (n * n))),
+              scale(p, (n - 3) / n));
     } else if (faces_at[v] == 1) {
       out.vertices[v] = p;  // a corner of a single face stays put
     } else {
@@ -295,21 +300,43 @@ QuadMesh random_quad_mesh(uint64_t seed, std::string* description) {
   Random rng(seed * 0x2545f4914f6cdd1dULL + 17);
   std::string summary;
   PolyMesh coarse;
+  int steps = 1, max_k = 3;
   if (rng.below(4) == 3) {
     const int n = rng.between(3, 6);
-    coarse = prism(n);
-    summary = std::to_string(n) + "-gonal prism";
+    // Prisms keep their first draws, so that older seeds still give the same closed prism.
+    switch (rng.below(4)) {
+      case 0:
+        coarse = prism(n, 1, true, true);
+        summary = std::to_string(n) + "-gonal prism";
+        break;
+      case 1:
+        coarse = prism(n, 1, true, true);
+        summary = std::to_string(n) + "-gonal prism, smoothed";
+        steps = 2, max_k = 2;
+        break;
+      case 2: {
+        const int rings = rng.between(1, 3);
+        coarse = prism(n, rings, false, false);
+        summary = std::to_string(n) + "-gonal open tube of " + std::to_string(rings) + " rings";
+        break;
+      }
+      default:
+        coarse = prism(n, 2, true, false);
+        summary = std::to_string(n) + "-gonal cup, smoothed";
+        steps = 2, max_k = 2;
+    }
   } else {
     coarse = random_planar_polygons(rng, summary);
   }
   QuadMesh mesh = catmull_clark(coarse);
+  if (steps == 2) mesh = catmull_clark(mesh);
   const int r = rng.below(5);
-  const int k = r < 2 ? 1 : r < 4 ? 2 : 3;
+  const int k = std::min(max_k, r < 2 ? 1 : r < 4 ? 2 : 3);
   mesh = linear_subdivision(mesh, k);
   if (description)
     *description = "seed " + std::to_string(seed) + ": " + summary + ", Catmull-Clark, " +
-                   std::to_string(k) + "x" + std::to_string(k) + " subdivision, " +
-                   std::to_string(mesh.num_quads()) + " quads";
+                   (steps == 2 ? "twice, " : "") + std::to_string(k) + "x" + std::to_string(k) +
+                   " subdivision, " + std::to_string(mesh.num_quads()) + " quads";
   return mesh;
 }
 
@@ -321,8 +348,8 @@ bool thin_strip_cell(int x, int y) {
   return true;
 }
 bool thin_strip_used(int x, int y) {
-  return thin_strip_cell(x - 1, y - 1) || thin_strip_cell(x, y - 1) ||
-         thin_strip_cell(x - 1, y) || thin_strip_cell(x, y);
+  return thin_strip_cell(x - 1, y - 1) || thin_strip_cell(x, y - 1) || thin_strip_cell(x - 1, y) ||
+         thin_strip_cell(x, y);
 }
 }  // namespace
 

@@ -60,10 +60,13 @@ QuadMesh linear_subdivision(const QuadMesh& mesh, int k);
 // A random small quad mesh, deterministic in `seed`. Three in four are planar (z = 0): a
 // 2..5 × 2..5 grid of cells, perhaps without one corner cell (a reflex border corner), with
 // random cells split into two triangles along a random diagonal and random pairs of cells
-// merged into hexagons; the others are closed: an n-gonal prism (n = 3..6, sharp edges at the
-// default 35°). Then one Catmull–Clark step (irregular vertices: triangle centres 3, hexagon
-// centres 6, split and merged vertices…), then k × k linear subdivision, k ∈ {1, 2, 3}.
-// At most ~900 quads. `description` (if given) receives a short summary for test messages.
+// merged into hexagons; then one Catmull–Clark step (irregular vertices: triangle centres 3,
+// hexagon centres 6, split and merged vertices…). The others are built on an n-gon, n = 3..6:
+// a closed prism after one Catmull–Clark step (every edge sharp at the default 35°) or two
+// (smooth), an open tube of 1..3 rings after one step (border valence 3 everywhere, no seed
+// unless features: annuli that tracing must cut), or a cup (one cap) after two. Finally k × k
+// linear subdivision, k ∈ {1, 2, 3} (at most 2 after two steps). At most ~1300 quads.
+// `description` (if given) receives a short summary for test messages.
 QuadMesh random_quad_mesh(uint64_t seed, std::string* description = nullptr);
 
 // A planar, open "staircase" with a deliberate thin strip: the 10 × 8 grid of unit cells

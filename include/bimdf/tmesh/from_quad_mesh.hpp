@@ -45,7 +45,7 @@ struct TracedTMesh {
   std::vector<int> feature_corners;               // mesh vertices
   std::vector<int> seeds;                         // mesh vertices that emitted traces
   int traces = 0;                                 // traces started
-  int extended_trace_edges = 0;  // mesh edges on extended traces (diagnostics)
+  int extended_trace_edges = 0;                   // mesh edges on extended traces (diagnostics)
 
   // Trace i, as the mesh vertices it runs through (its seed first), in the motorcycle graph
   // and in the extended one; both in emission order (seeds ascending, then each seed's edges
@@ -96,6 +96,6 @@ std::vector<std::vector<int>> half_arcs_along(const TMesh& tmesh,
 // (0-based quad id, edge 0..3 = from corner e to corner e+1). Returns mesh vertex pairs. Throws
 // InputError naming the file and line.
 std::vector<std::array<int, 2>> read_quad_feature_file(const std::string& path,
-                                                      const QuadMesh& mesh);
+                                                       const QuadMesh& mesh);
 
 }  // namespace bimdf::tmesh

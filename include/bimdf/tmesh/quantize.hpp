@@ -16,10 +16,11 @@
 // linear. Paths that contain no whole side are covered by one of their arcs.
 //
 // Costs: the deviation of each arc from its target, quadratic (x − t)² by default or absolute
-// |x − t|. The coarse objective (Lyon et al. 2021's) is linear instead: each arc costs, per unit
-// of length, half the target extent of each of its patches across it (the other side pair's
-// target), which approximates the total length of the layout's lines — the coarsest layout the
-// non-zero paths allow.
+// |x − t|, plus the same deviation, weighted by `side_weight`, of each patch's width and height
+// (the inner edges' flows) from the mean of its two sides' targets. The coarse objective (Lyon et
+// al. 2021's) is linear instead: each arc costs, per unit of length, half the target extent of each
+// of its patches across it (the other side pair's target), which approximates the total length of
+// the layout's lines — the coarsest layout the non-zero paths allow.
 #pragma once
 
 #include <array>
@@ -52,6 +53,9 @@ MinOneConstraints greedy_min_one_constraints(const TMesh& tmesh, const TMeshInci
 struct ArcModelOptions {
   DeviationCost cost = DeviationCost::Quadratic;
   bool coarse = false;  // the linear coarse objective instead of the deviation
+  // Weight of each patch's width and height deviating from their sides' mean target (same
+  // kind of cost as the arcs'); 0: arcs only.
+  double side_weight = 1;
   // Optional, one entry per arc: −1 free, 0 fixed to 0, 1 at least 1 (empty: all free).
   std::vector<int8_t> arc_pattern;
 };
@@ -77,6 +81,7 @@ std::string check_quantization(const TMesh& tmesh, const std::vector<int64_t>& a
 
 struct QuantizeOptions {
   DeviationCost cost = DeviationCost::Quadratic;
+  double side_weight = 1;  // ArcModelOptions::side_weight
   // Coarse layout: first the coarse objective decides which arcs are 0; then the same model
   // with that pattern fixed (zero arcs 0, others ≥ 1) and the deviation costs gives the
   // lengths at the T-mesh's target density.
