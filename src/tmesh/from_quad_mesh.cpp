@@ -71,7 +71,44 @@ struct EdgeOnArc {
 // it ran on from its seed to where it stopped in the motorcycle graph (cylinder cuts
 // included), then one per cylinder half-loop (trace −1). Kept separate so that the rule (e.g.
 // Lyon et al.'s paths from the extended graph) can be swapped.
-void add_nonzero_paths_per_trace(TracedTMesh& out) {
+//
+// Then one per border or feature curve piece: from every seed along each of its border or
+// feature edges, straight on along the curve to the next seed. Traces alone do not keep curves
+// apart: a mesh whose every edge is a feature (a cube subdivided once, sharp everywhere), or
+// a plain grid whose corners emit no trace, has no trace at all, and without these paths every
+// arc could be 0.
+std::vector<std::vector<int>> curve_chains(const QuadMeshTopology& topo,
+                                           const std::vector<uint8_t>& feature,
+                                           const std::vector<int>& seeds) {
+  std::vector<char> is_seed(topo.num_vertices(), 0);
+  for (int s : seeds) is_seed[s] = 1;
+  const auto on_curve = [&](int e) { return topo.is_border_edge(e) || feature[e] != 0; };
+  std::vector<std::vector<int>> chains;
+  for (int s : seeds)
+    for (int e0 : topo.vertex_edges(s)) {
+      if (!on_curve(e0)) continue;
+      std::vector<int> chain{s};
+      int at = s, e = e0;
+      // A curve continues straight on at every vertex that is not a seed (feature corners
+      // and border corners are seeds); a closed curve returns to s.
+      while (e >= 0 && on_curve(e)) {
+        at = topo.other_vertex(e, at);
+        chain.push_back(at);
+        if (is_seed[at] || at == s) break;
+        e = topo.straight_on(at, e);
+      }
+      // Each piece is walked from both of its ends (a closed one both ways from its seed):
+      // keep one walk.
+      const bool first_walk = chain.front() != chain.back()
+                                  ? chain.front() < chain.back()
+                                  : chain.size() < 3 || chain[1] <= chain[chain.size() - 2];
+      if (first_walk) chains.push_back(std::move(chain));
+    }
+  return chains;
+}
+
+void add_nonzero_paths_per_trace(TracedTMesh& out, const QuadMeshTopology& topo,
+                                 const std::vector<uint8_t>& feature) {
   std::vector<std::vector<int>> chains;
   out.nonzero_path_trace.clear();
   for (size_t t = 0; t < out.trace_vertices.size(); ++t)
@@ -82,6 +119,10 @@ void add_nonzero_paths_per_trace(TracedTMesh& out) {
   for (const auto& loop : out.cylinder_half_loops) {
     chains.push_back(loop);
     out.nonzero_path_trace.push_back(-1);
+  }
+  for (auto& chain : curve_chains(topo, feature, out.seeds)) {
+    chains.push_back(std::move(chain));
+    out.nonzero_path_trace.push_back(-2);
   }
   out.tmesh.nonzero_paths = half_arcs_along(out.tmesh, chains);
 }
@@ -228,7 +269,7 @@ TracedTMesh trace_tmesh(const QuadMesh& mesh, const TraceOptions& options,
     tm.patch_grid.push_back(r.grid);
   }
 
-  add_nonzero_paths_per_trace(out);
+  add_nonzero_paths_per_trace(out, topo, feature);
   validate_tmesh(tm, source);
   return out;
 }

@@ -1,7 +1,7 @@
-// Collapse and tessellation of quantized T-meshes, smoothing on the input, conforming layouts
-// (tmesh/collapse.hpp, src/tmesh/smooth_requantized.hpp). The T-meshes are built by hand:
-// rectangles of a grid mesh (with patch grids and arc chains), and a cube and a cylinder
-// without a mesh.
+// Collapse and tessellation of quantized T-meshes (tmesh/collapse.hpp): hand-built T-meshes
+// reproduce their grid, double it, collapse zero-width strips and reject bad lengths; T-meshes
+// traced from quad meshes and quantized by the exact solver collapse to conforming meshes or
+// are refused. Smoothing and conforming layouts are tested in test_tmesh_layout.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,9 +9,10 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "bimdf/metrics.hpp"
@@ -19,142 +20,13 @@
 #include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/quantize.hpp"
 #include "tmesh/smooth_requantized.hpp"
+#include "tmesh_collapse_support.hpp"
 #include "tmesh_fixtures.hpp"
 
 namespace bimdf::tmesh {
 namespace {
 
-using Vec3 = std::array<double, 3>;
-
-struct Grid {
-  QuadMesh mesh;
-  int nx = 0, ny = 0;
-  int id(int i, int j) const { return j * (nx + 1) + i; }
-};
-
-// An nx × ny grid of quads, counter-clockwise seen from +z; `curved` bends it and spaces it
-// unevenly so that exact reproduction means something.
-Grid grid_mesh(int nx, int ny, bool curved) {
-  Grid g;
-  g.nx = nx, g.ny = ny;
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i)
-      g.mesh.vertices.push_back(
-          curved ? Vec3{i + 0.2 * std::sin(j + 0.5 * i), j + 0.1 * i * i / nx, 0.05 * i * j}
-                 : Vec3{double(i), double(j), 0});
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      g.mesh.quads.push_back({g.id(i, j), g.id(i + 1, j), g.id(i + 1, j + 1), g.id(i, j + 1)});
-      g.mesh.quad_patch.push_back(-1);
-    }
-  return g;
-}
-
-// What validate_tmesh derives, computed here so that these tests stand alone.
-TMeshIncidence incidence_of(const TMesh& t) {
-  TMeshIncidence inc;
-  inc.half_arc_patch.assign(t.num_half_arcs(), -1);
-  inc.half_arc_side.assign(t.num_half_arcs(), -1);
-  for (int p = 0; p < t.num_patches(); ++p)
-    for (int k = 0; k < 4; ++k)
-      for (int h : t.patch_sides[p][k]) inc.half_arc_patch[h] = p, inc.half_arc_side[h] = k;
-  return inc;
-}
-
-// A T-mesh whose patches are the rectangles [i0, i1] × [j0, j1] of grid g (they must tile
-// it): T-mesh vertices are their corners, arcs the pieces of their sides between T-mesh
-// vertices, oriented as first walked; targets are the arcs' numbers of mesh edges.
-TMesh tmesh_from_rectangles(const Grid& g, const std::vector<std::array<int, 4>>& rects) {
-  TMesh t;
-  std::map<int, int> vertex_of;  // grid vertex → T-mesh vertex
-  for (const auto& [i0, j0, i1, j1] : rects)
-    for (int m : {g.id(i0, j0), g.id(i1, j0), g.id(i1, j1), g.id(i0, j1)})
-      if (vertex_of.emplace(m, t.num_vertices()).second) {
-        t.vertices.push_back(g.mesh.vertices[m]);
-        t.vertex_mesh_vertex.push_back(m);
-      }
-  std::map<std::pair<int, int>, int> arc_of;  // sorted end grid vertices → arc
-  for (const auto& [i0, j0, i1, j1] : rects) {
-    const std::array<std::array<int, 2>, 5> corner{
-        {{i0, j0}, {i1, j0}, {i1, j1}, {i0, j1}, {i0, j0}}};
-    std::array<std::vector<int>, 4> sides;
-    for (int k = 0; k < 4; ++k) {
-      const auto [a, b] = corner[k];
-      const auto [c, d] = corner[k + 1];
-      const int n = std::abs(c - a) + std::abs(d - b);
-      std::vector<int> chain{g.id(a, b)};
-      for (int s = 1; s <= n; ++s) {
-        chain.push_back(g.id(a + (c - a) / n * s, b + (d - b) / n * s));
-        if (!vertex_of.count(chain.back())) continue;
-        const std::pair<int, int> key{std::min(chain.front(), chain.back()),
-                                      std::max(chain.front(), chain.back())};
-        auto [it, added] = arc_of.emplace(key, t.num_arcs());
-        if (added) {
-          t.arc_ends.push_back({vertex_of[chain.front()], vertex_of[chain.back()]});
-          t.arc_chain.push_back(chain);
-          t.arc_target.push_back(double(chain.size() - 1));
-          t.arc_feature.push_back(0);
-        }
-        sides[k].push_back(2 * it->second + (t.arc_chain[it->second].front() != chain.front()));
-        chain = {chain.back()};
-      }
-    }
-    t.patch_sides.push_back(sides);
-    PatchGrid grid;
-    grid.width = i1 - i0, grid.height = j1 - j0;
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) grid.vertices.push_back(g.id(i, j));
-    t.patch_grid.push_back(grid);
-  }
-  return t;
-}
-
-std::vector<int64_t> targets(const TMesh& t, int64_t factor = 1) {
-  std::vector<int64_t> x;
-  for (double v : t.arc_target) x.push_back(static_cast<int64_t>(v) * factor);
-  return x;
-}
-
-// Collapses the arcs of target 1 of the strip layouts (their strips), keeps the others.
-std::vector<int64_t> collapse_strips(const TMesh& t, int64_t factor) {
-  std::vector<int64_t> x = targets(t, factor);
-  for (int a = 0; a < t.num_arcs(); ++a)
-    if (t.arc_target[a] == 1) x[a] = 0;
-  return x;
-}
-
-// The unit cube as a T-mesh without a mesh: vertex x + 2y + 4z, one patch per face, one arc
-// per edge (its direction class — 0 for x, 1 for y, 2 for z — in `axis`).
-TMesh cube_tmesh(std::vector<int>& axis) {
-  TMesh t;
-  for (int v = 0; v < 8; ++v)
-    t.vertices.push_back({double(v & 1), double(v >> 1 & 1), double(v >> 2)});
-  const std::vector<std::array<int, 4>> faces{{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                                              {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  std::map<std::pair<int, int>, int> arc_of;
-  axis.clear();
-  for (const auto& f : faces) {
-    std::array<std::vector<int>, 4> sides;
-    for (int k = 0; k < 4; ++k) {
-      const int u = f[k], v = f[(k + 1) % 4];
-      auto [it, added] = arc_of.emplace(std::pair{std::min(u, v), std::max(u, v)}, t.num_arcs());
-      if (added) {
-        t.arc_ends.push_back({u, v});
-        t.arc_target.push_back(1);
-        axis.push_back((u ^ v) == 1 ? 0 : (u ^ v) == 2 ? 1 : 2);
-      }
-      sides[k] = {2 * it->second + (t.arc_ends[it->second][0] != u)};
-    }
-    t.patch_sides.push_back(sides);
-  }
-  return t;
-}
-
-std::vector<int64_t> cube_lengths(const std::vector<int>& axis, std::array<int64_t, 3> size) {
-  std::vector<int64_t> x;
-  for (int a : axis) x.push_back(size[a]);
-  return x;
-}
+using namespace testsupport;
 
 // Output vertex → input vertex at the same position (within 1e-12), or −1.
 std::vector<int> match_positions(const QuadMesh& out, const QuadMesh& in) {
@@ -189,57 +61,6 @@ std::vector<int> expect_reproduces(const QuadMesh& out, const QuadMesh& in) {
   EXPECT_EQ(got, want);
   return match;
 }
-
-// Vertices on edges with a single quad.
-std::set<int> border_vertices(const QuadMesh& m) {
-  std::map<std::pair<int, int>, int> count;
-  for (const auto& q : m.quads)
-    for (int a = 0; a < 4; ++a)
-      ++count[{std::min(q[a], q[(a + 1) % 4]), std::max(q[a], q[(a + 1) % 4])}];
-  std::set<int> border;
-  for (const auto& [e, n] : count)
-    if (n == 1) border.insert(e.first), border.insert(e.second);
-  return border;
-}
-
-double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  double ab2 = 0, t = 0;
-  for (int d = 0; d < 3; ++d)
-    ab2 += (b[d] - a[d]) * (b[d] - a[d]), t += (p[d] - a[d]) * (b[d] - a[d]);
-  t = ab2 > 0 ? std::clamp(t / ab2, 0.0, 1.0) : 0.0;
-  double d2 = 0;
-  for (int d = 0; d < 3; ++d) d2 += std::pow(a[d] + t * (b[d] - a[d]) - p[d], 2);
-  return std::sqrt(d2);
-}
-
-// The largest distance from a border vertex of `out` to the border of `in`.
-double border_deviation(const QuadMesh& out, const QuadMesh& in) {
-  std::map<std::pair<int, int>, int> count;
-  for (const auto& q : in.quads)
-    for (int a = 0; a < 4; ++a)
-      ++count[{std::min(q[a], q[(a + 1) % 4]), std::max(q[a], q[(a + 1) % 4])}];
-  double worst = 0;
-  for (int v : border_vertices(out)) {
-    double best = 1e300;
-    for (const auto& [e, n] : count)
-      if (n == 1)
-        best = std::min(best, distance_to_segment(out.vertices[v], in.vertices[e.first],
-                                                  in.vertices[e.second]));
-    worst = std::max(worst, best);
-  }
-  return worst;
-}
-
-// 2 × 2 patches of a 4 × 3 grid.
-const std::vector<std::array<int, 4>> kTwoByTwo{
-    {0, 0, 2, 1}, {2, 0, 4, 1}, {0, 1, 2, 3}, {2, 1, 4, 3}};
-// A T-junction: one patch on the left, two on the right, meeting at (2, 1) on its side 1.
-const std::vector<std::array<int, 4>> kTJunction{{0, 0, 2, 2}, {2, 0, 4, 1}, {2, 1, 4, 2}};
-// A thin strip (height 1, split in two at x = 2) between two patches of a 4 × 5 grid.
-// A thin strip along the border (height 1, split in two at x = 2) below a 4 × 3 patch.
-const std::vector<std::array<int, 4>> kBorderStrip{{0, 0, 2, 1}, {2, 0, 4, 1}, {0, 1, 4, 4}};
-const std::vector<std::array<int, 4>> kStrip{
-    {0, 0, 4, 2}, {0, 2, 2, 3}, {2, 2, 4, 3}, {0, 3, 4, 5}};
 
 TEST(TMeshCollapse, HandBuiltTMeshesAreValid) {
   // The fixtures above agree with validate_tmesh (tmesh.hpp) and its incidence.
@@ -429,194 +250,6 @@ TEST(TMeshCollapse, BadLengthsAreRejected) {
   x[0] += 1;  // arc 0 is patch 0's bottom side
   EXPECT_EQ(message(x),
             "patch 0: sides 0 and 2 have lengths 3 and 2, opposite sides must be equal");
-}
-
-TEST(TMeshSmoothing, KeepsTheBorderAndNeverInverts) {
-  for (const auto& [rects, nx, ny, factor, strip] :
-       {std::tuple{kTwoByTwo, 4, 3, 2, false}, std::tuple{kTJunction, 4, 2, 3, false},
-        std::tuple{kStrip, 4, 5, 1, true}, std::tuple{kBorderStrip, 4, 4, 2, true}}) {
-    const Grid g = grid_mesh(nx, ny, true);
-    const TMesh t = tmesh_from_rectangles(g, rects);
-    const TMeshIncidence inc = incidence_of(t);
-    CollapsedMesh out = collapse_and_tessellate(
-        t, inc, strip ? collapse_strips(t, factor) : targets(t, factor), &g.mesh);
-    const QuadMesh before = out.mesh;
-    smooth_requantized(g.mesh, t, inc, {}, {}, out, quant::SmoothingOptions{});
-    EXPECT_EQ(out.mesh.quads, before.quads);
-    if (rects == kBorderStrip) {  // the merged border starts half a strip inside
-      EXPECT_GT(border_deviation(before, g.mesh), 0.4);
-    }
-    EXPECT_LT(border_deviation(out.mesh, g.mesh), 1e-9);
-    const TriangleMesh surface = requantization_layout(g.mesh, t, inc, {}, {}).mesh;
-    const QuadMeshMetrics m = measure_quad_mesh(out.mesh, &surface);
-    EXPECT_EQ(m.inverted + m.degenerate + m.flipped, 0);
-    EXPECT_GT(m.scaled_jacobian_min, 0.5);
-    EXPECT_GE(m.scaled_jacobian_mean, measure_quad_mesh(before).scaled_jacobian_mean);
-    EXPECT_LT(m.hausdorff_relative, 0.01);
-    // The grid's corners stay.
-    for (const Vec3& c : {g.mesh.vertices[g.id(0, 0)], g.mesh.vertices[g.id(nx, ny)]})
-      EXPECT_EQ(std::count(out.mesh.vertices.begin(), out.mesh.vertices.end(), c), 1);
-  }
-}
-
-TEST(TMeshSmoothing, FeatureCurvesAndCornersStay) {
-  // The line j = 1 of the 2 × 2 patches is a feature curve, its middle (2, 1) a feature corner.
-  const Grid g = grid_mesh(4, 3, true);
-  TMesh t = tmesh_from_rectangles(g, kTwoByTwo);
-  std::vector<int> feature_line;
-  for (int i = 0; i <= 4; ++i) feature_line.push_back(g.id(i, 1));
-  for (int a = 0; a < t.num_arcs(); ++a)
-    t.arc_feature[a] = std::all_of(t.arc_chain[a].begin(), t.arc_chain[a].end(),
-                                   [&](int m) { return m / 5 == 1; });
-  const TMeshIncidence inc = incidence_of(t);
-  CollapsedMesh out = collapse_and_tessellate(t, inc, targets(t, 3), &g.mesh);
-  const QuadMesh before = out.mesh;
-  smooth_requantized(g.mesh, t, inc, {}, {g.id(2, 1)}, out, quant::SmoothingOptions{});
-  int on_line = 0, moved = 0;
-  for (int v = 0; v < out.mesh.num_vertices(); ++v) {
-    moved += out.mesh.vertices[v] != before.vertices[v];
-    const auto& arcs = out.origin[v].arcs;
-    if (arcs.size() != 1 || !t.arc_feature[arcs[0]]) continue;
-    ++on_line;
-    double d = 1e300;
-    for (int i = 0; i < 4; ++i)
-      d = std::min(d, distance_to_segment(out.mesh.vertices[v], g.mesh.vertices[feature_line[i]],
-                                          g.mesh.vertices[feature_line[i + 1]]));
-    EXPECT_LT(d, 1e-9) << v;
-  }
-  EXPECT_EQ(on_line, 10);  // 5 interior points on each of the two feature arcs
-  EXPECT_GT(moved, 0);
-  EXPECT_EQ(
-      std::count(out.mesh.vertices.begin(), out.mesh.vertices.end(), g.mesh.vertices[g.id(2, 1)]),
-      1);
-  EXPECT_EQ(measure_quad_mesh(out.mesh).inverted, 0);
-}
-
-TEST(TMeshSmoothing, LayoutMatchesTheTMesh) {
-  const Grid g = grid_mesh(4, 2, true);
-  const TMesh t = tmesh_from_rectangles(g, kTJunction);
-  const quant::Layout layout = requantization_layout(g.mesh, t, incidence_of(t), {}, {});
-  ASSERT_EQ(layout.mesh.num_faces(), 16);
-  EXPECT_EQ(layout.charts[0].faces.size(), 8u);
-  EXPECT_EQ(layout.charts[1].faces.size(), 4u);
-  ASSERT_EQ(layout.subsides.size(), size_t(t.num_arcs()));
-  int border = 0;
-  for (const quant::Subside& s : layout.subsides) border += s.on_border();
-  EXPECT_EQ(border, 7);  // the left patch's left, bottom and top; two on each right patch
-  // Each chart's sides start at its corners.
-  for (int p = 0; p < t.num_patches(); ++p)
-    for (int k = 0; k < 4; ++k)
-      EXPECT_EQ(layout.charts[p].corners[k],
-                t.vertex_mesh_vertex[t.half_arc_tail(t.patch_sides[p][k][0])]);
-}
-
-TEST(ConformingLayout, GridIsOnePatch) {
-  const Grid g = grid_mesh(5, 3, true);
-  const ConformingLayout layout = conforming_layout(g.mesh);
-  ASSERT_EQ(layout.patch_corners.size(), 1u);
-  EXPECT_EQ(layout.patch_side_length[0], (std::array<int64_t, 4>{5, 3, 5, 3}));
-  EXPECT_EQ(layout.patch_corners[0],
-            (std::array<int, 4>{g.id(0, 0), g.id(5, 0), g.id(5, 3), g.id(0, 3)}));
-  EXPECT_EQ(layout.face_patch, std::vector<int>(15, 0));
-  EXPECT_EQ(layout.patch_side_chain[0][1],
-            (std::vector<int>{g.id(5, 0), g.id(5, 1), g.id(5, 2), g.id(5, 3)}));
-}
-
-TEST(ConformingLayout, FeatureEdgesCut) {
-  const Grid g = grid_mesh(5, 3, false);
-  // A feature line from the bottom border up to (2, 2). Its end is a feature corner that
-  // traces on in every direction (up, left, right), so the layout is four rectangles, not a
-  // slit one. Patches are numbered by their first quad.
-  const ConformingLayout layout =
-      conforming_layout(g.mesh, {{g.id(2, 0), g.id(2, 1)}, {g.id(2, 1), g.id(2, 2)}});
-  ASSERT_EQ(layout.patch_corners.size(), 4u);
-  EXPECT_EQ(layout.patch_side_length[0], (std::array<int64_t, 4>{2, 2, 2, 2}));
-  EXPECT_EQ(layout.patch_side_length[1], (std::array<int64_t, 4>{3, 2, 3, 2}));
-  EXPECT_EQ(layout.patch_side_length[2], (std::array<int64_t, 4>{2, 1, 2, 1}));
-  EXPECT_EQ(layout.patch_side_length[3], (std::array<int64_t, 4>{3, 1, 3, 1}));
-  EXPECT_EQ(layout.patch_corners[3],
-            (std::array<int, 4>{g.id(2, 2), g.id(5, 2), g.id(5, 3), g.id(2, 3)}));
-  try {
-    conforming_layout(g.mesh, {{g.id(0, 0), g.id(1, 1)}});
-    FAIL() << "no error";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "feature edge (0, 7) is not an edge of the mesh");
-  }
-}
-
-TEST(ConformingLayout, SubdividedCubeHasSixEqualPatches) {
-  std::vector<int> axis;
-  const TMesh t = cube_tmesh(axis);
-  for (int64_t n : {1, 2, 4}) {
-    const QuadMesh cube =
-        collapse_and_tessellate(t, incidence_of(t), cube_lengths(axis, {n, n, n}), nullptr).mesh;
-    const ConformingLayout layout = conforming_layout(cube);
-    ASSERT_EQ(layout.patch_corners.size(), 6u);
-    for (const auto& sides : layout.patch_side_length)
-      EXPECT_EQ(sides, (std::array<int64_t, 4>{n, n, n, n}));
-  }
-}
-
-TEST(ConformingLayout, CatmullClarkCubeHasSixEqualPatches) {
-  for (int levels = 1; levels <= 3; ++levels) {
-    const ConformingLayout layout = conforming_layout(test::subdivided_cube(levels));
-    ASSERT_EQ(layout.patch_corners.size(), 6u);
-    const int64_t n = int64_t{1} << levels;
-    for (const auto& sides : layout.patch_side_length)
-      EXPECT_EQ(sides, (std::array<int64_t, 4>{n, n, n, n}));
-    // Every corner is one of the cube's corners (ids 0..7).
-    for (const auto& corners : layout.patch_corners)
-      for (int v : corners) EXPECT_LT(v, 8);
-  }
-}
-
-TEST(ConformingLayout, AgreesWithTheBaseComplex) {
-  // Without features the cuts are those of measure_quad_mesh's base complex.
-  std::vector<QuadMesh> meshes{test::thin_strip_mesh()};
-  for (uint64_t seed = 0; seed < 40; ++seed) meshes.push_back(test::random_quad_mesh(seed));
-  for (size_t k = 0; k < meshes.size(); ++k) {
-    const QuadMesh& mesh = meshes[k];
-    const ConformingLayout layout = conforming_layout(mesh);
-    EXPECT_EQ(static_cast<int>(layout.patch_corners.size()),
-              measure_quad_mesh(mesh).base_complex_faces)
-        << "mesh " << k;
-    // Sides are chains of mesh edges from corner to corner.
-    for (size_t p = 0; p < layout.patch_corners.size(); ++p)
-      for (int s = 0; s < 4; ++s) {
-        const auto& chain = layout.patch_side_chain[p][s];
-        EXPECT_EQ(chain.front(), layout.patch_corners[p][s]);
-        EXPECT_EQ(chain.back(), layout.patch_corners[p][(s + 1) % 4]);
-      }
-  }
-}
-
-TEST(ConformingLayout, ClosedGridWithoutCornersIsRefused) {
-  try {
-    conforming_layout(test::torus_mesh(12, 12));
-    FAIL() << "no CollapseError";
-  } catch (const CollapseError& e) {
-    EXPECT_STREQ(e.what(), "base complex patch 0 (with quad 0) has 0 corners, expected 4");
-  }
-}
-
-TEST(ConformingLayout, CollapsedStripLayout) {
-  // The collapsed strip (see ZeroWidthStripCollapses) is a 4 × 4 grid: one patch again.
-  const Grid g = grid_mesh(4, 5, false);
-  const TMesh t = tmesh_from_rectangles(g, kStrip);
-  const CollapsedMesh out =
-      collapse_and_tessellate(t, incidence_of(t), collapse_strips(t, 1), &g.mesh);
-  const ConformingLayout layout = conforming_layout(out.mesh);
-  ASSERT_EQ(layout.patch_corners.size(), 1u);
-  EXPECT_EQ(layout.patch_side_length[0], (std::array<int64_t, 4>{4, 4, 4, 4}));
-}
-
-TEST(ConformingLayout, ObjFormat) {
-  const Grid g = grid_mesh(2, 1, false);
-  std::ostringstream out;
-  write_layout_obj(out, g.mesh, conforming_layout(g.mesh));
-  EXPECT_EQ(out.str(),
-            "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\n"
-            "g patch_0\n# sides 2 1 2 1\nf 1 3 6 4\nl 1 2 3\nl 3 6\nl 6 5 4\nl 4 1\n");
 }
 
 // T-meshes traced from quad meshes (from_quad_mesh.hpp) and validated (tmesh.hpp).

@@ -112,6 +112,22 @@ std::string check_traced(const QuadMesh& mesh, const TracedTMesh& r, double dens
   for (size_t k = 0; k < tm.nonzero_paths.size(); ++k) {
     const auto& path = tm.nonzero_paths[k];
     const int from = r.nonzero_path_trace[k];
+    if (from == -2) {  // a border or feature curve piece: connected, on curves, seed to seed
+      const TMeshIncidence inc = validate_tmesh(tm);
+      const auto is_seed = [&](int tv) {
+        return std::count(r.seeds.begin(), r.seeds.end(), tm.vertex_mesh_vertex[tv]) > 0;
+      };
+      if (path.empty() || !is_seed(tm.half_arc_tail(path[0])))
+        return "curve path " + std::to_string(k) + " does not start at a seed";
+      for (size_t i = 0; i < path.size(); ++i) {
+        const int a = TMesh::arc_of(path[i]);
+        if (!tm.arc_feature[a] && !inc.is_border(2 * a) && !inc.is_border(2 * a + 1))
+          return "curve path " + std::to_string(k) + " leaves the border and features";
+        if (i > 0 && tm.half_arc_tail(path[i]) != tm.half_arc_head(path[i - 1]))
+          return "curve path " + std::to_string(k) + " is not connected";
+      }
+      continue;
+    }
     if (from < 0 && half_loops >= r.cylinder_half_loops.size()) return "too many half-loop paths";
     const auto& trace = from >= 0 ? r.trace_vertices[from] : r.cylinder_half_loops[half_loops++];
     if (path.empty()) return "empty non-zero path";
@@ -161,7 +177,9 @@ TEST(TraceTMesh, RegularGridIsOnePatch) {
   EXPECT_EQ(r.traces, 0);
   EXPECT_EQ(tm.num_arcs(), 4);
   EXPECT_EQ(tm.num_vertices(), 4);
-  EXPECT_TRUE(tm.nonzero_paths.empty());
+  // No trace, but each border side between two corners is a curve path.
+  ASSERT_EQ(tm.nonzero_paths.size(), 4u);
+  for (const auto& path : tm.nonzero_paths) EXPECT_EQ(path.size(), 1u);
   std::multiset<double> targets(tm.arc_target.begin(), tm.arc_target.end());
   EXPECT_EQ(targets, (std::multiset<double>{4.5, 4.5, 7.5, 7.5}));
   for (int k = 0; k < 4; ++k) EXPECT_EQ(tm.patch_sides[0][k].size(), 1u);
@@ -330,7 +348,7 @@ TEST(TraceTMesh, RandomMeshes) {
   int with_traces = 0, not_planar = 0, thin = 0, with_cuts = 0;
   for (int seed = 0; seed < count; ++seed) {
     std::string what;
-    const QuadMesh mesh = test::random_quad_mesh(seed, &what);
+    const QuadMesh mesh = test::random_quad_mesh(seed, &what, /*with_tubes=*/true);
     SCOPED_TRACE(what);
     TraceOptions o;
     o.density = 0.5 + seed % 3;

@@ -296,7 +296,7 @@ QuadMesh linear_subdivision(const QuadMesh& mesh, int k) {
   return out;
 }
 
-QuadMesh random_quad_mesh(uint64_t seed, std::string* description) {
+QuadMesh random_quad_mesh(uint64_t seed, std::string* description, bool with_tubes) {
   Random rng(seed * 0x2545f4914f6cdd1dULL + 17);
   std::string summary;
   PolyMesh coarse;
@@ -315,6 +315,12 @@ QuadMesh random_quad_mesh(uint64_t seed, std::string* description) {
         steps = 2, max_k = 2;
         break;
       case 2: {
+        if (!with_tubes) {
+          coarse = prism(n, 1, true, true);
+          summary = std::to_string(n) + "-gonal prism, smoothed";
+          steps = 2, max_k = 2;
+          break;
+        }
         const int rings = rng.between(1, 3);
         coarse = prism(n, rings, false, false);
         summary = std::to_string(n) + "-gonal open tube of " + std::to_string(rings) + " rings";

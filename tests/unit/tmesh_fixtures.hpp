@@ -64,10 +64,12 @@ QuadMesh linear_subdivision(const QuadMesh& mesh, int k);
 // hexagon centres 6, split and merged vertices…). The others are built on an n-gon, n = 3..6:
 // a closed prism after one Catmull–Clark step (every edge sharp at the default 35°) or two
 // (smooth), an open tube of 1..3 rings after one step (border valence 3 everywhere, no seed
-// unless features: annuli that tracing must cut), or a cup (one cap) after two. Finally k × k
+// unless features: annuli that tracing must cut; only `with_tubes`, else a smoothed prism
+// again), or a cup (one cap) after two. Finally k × k
 // linear subdivision, k ∈ {1, 2, 3} (at most 2 after two steps). At most ~1300 quads.
 // `description` (if given) receives a short summary for test messages.
-QuadMesh random_quad_mesh(uint64_t seed, std::string* description = nullptr);
+QuadMesh random_quad_mesh(uint64_t seed, std::string* description = nullptr,
+                          bool with_tubes = false);
 
 // A planar, open "staircase" with a deliberate thin strip: the 10 × 8 grid of unit cells
 // without the lower-left 3 × 3 block and the upper-right 3 × 4 block. Its two reflex border

@@ -52,7 +52,8 @@ struct TracedTMesh {
   // counter-clockwise), so trace i is the same trace in both.
   std::vector<std::vector<int>> trace_vertices;
   std::vector<std::vector<int>> extended_trace_vertices;
-  // Per entry of tmesh.nonzero_paths: the trace it was made from, −1 for a cylinder half-loop.
+  // Per entry of tmesh.nonzero_paths: the trace it was made from, −1 for a cylinder half-loop,
+  // −2 for a border or feature curve piece between two seeds.
   std::vector<int> nonzero_path_trace;
 
   // Completion cuts. Two kinds of region of the motorcycle graph are not rectangles with

@@ -1,0 +1,78 @@
+// The angle-bounded extended motorcycle graph and its non-zero paths (internal to src/tmesh):
+// the T-mesh of `bimdf requantize --coarse [--max-angle DEG]`, after Lyon, Campen and Kobbelt
+// 2021, "Quad Layouts via Constrained T-Mesh Quantization" (ATQ).
+//
+// Source note: ATQ's own text was not available to us. The rules below follow a second-hand
+// description of a reimplementation, completed where it was silent (marked "ours"); the
+// construction may differ from the paper's in details. What it must guarantee, it does by
+// construction: the cut cuts the mesh into rectangles (up to the annuli and self-meeting rings
+// that complete_to_rectangles handles), the result does not depend on the order of the seeds,
+// and every non-zero chain is a straight chain of cut edges from a seed.
+//
+// Traces. From every seed along every edge that is neither border nor feature (the traces of
+// trace_extended_motorcycle_graph, in the same emission order), each going straight on through
+// collisions until it reaches the border, a feature curve or a seed, or would repeat a directed
+// edge — or until the angle rule stops it:
+//   * A crossing of traces t_i (from seed i) and t_j (seed j, j ≠ i as traces) is a regular
+//     interior vertex n that both traces have reached, arriving along perpendicular edges. With
+//     l_ij the edges along t_i from i to n and l_ji along t_j, the right triangle (i, n, j)
+//     has tan|α_ij| = l_ji / l_ij at i; α_ij > 0 when t_j arrives from t_i's left (from the
+//     counter-clockwise neighbour of t_i's forward edge in n's ring), < 0 from its right.
+//   * With α = max_angle_deg < 90, t_i becomes *done* once it has crossed a trace with
+//     α_ij ∈ (0, α] and one with α_ij ∈ [−α, 0) (the same trace may be both, meeting t_i twice
+//     around a loop: two copies of one seed). Ratios within 1e-12 of tan α count as equal.
+//   * Lockstep (ours, for order independence): all traces advance one edge per step, so a
+//     trace's position is the step number. A step first moves every trace, then records the
+//     crossings that now exist (a trace that stopped keeps what it traced and is crossed only
+//     there), then decides: a done trace stops at its current vertex if a cut line passes
+//     straight *through* it there — the border, a feature, a seed, a trace that has moved on
+//     from it (itself included), or a trace standing on it that is not done (it will move on).
+//     Otherwise it runs on until it is at such a vertex. So no trace ends inside a region and
+//     two done traces never end on each other in an L. Every decision of a step depends only
+//     on the state after all of its moves, never on the traces' order.
+//   * max_angle_deg ≥ 90 disables the angle rule: the traces are those of
+//     trace_extended_motorcycle_graph.
+//
+// Non-zero paths (mesh-vertex chains, each a prefix of a trace or a curve path):
+//   (1) per trace t_i, from i to the first crossing n_ij with l_ji < l_ij (seed j inside t_i's
+//       90° sector), or the whole trace if there is none;
+//   (2) when max_angle_deg < 90, for every crossing with l_ji > tan α · l_ij: t_j from j to
+//       n_ij (else seed j could slide onto t_i's line, turning it by more than α);
+//   (3, ours) from every seed along every border or feature edge, straight on along that curve
+//     to the next seed (without it a mesh whose curves leave no trace could collapse whole).
+//   Two paths with the same edge set are one (the one whose vertex sequence is smaller is
+//   kept), and a path whose edges include all of another path's is dropped (it is implied).
+//   Since (1) and (2) are nested prefixes of one trace, each trace keeps at most one path.
+//
+// Cost: every step takes a directed edge no trace took before, so tracing takes at most
+// 2·edges moves in all; paths add O(crossings + edges).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tmesh/motorcycle.hpp"
+#include "tmesh/quad_mesh_topology.hpp"
+
+namespace bimdf::tmesh::detail {
+
+struct AngleBoundedGraph {
+  // In emission order (seeds as given, at each seed its ring order), as
+  // trace_extended_motorcycle_graph; every trace has at least one edge.
+  std::vector<Trace> traces;
+  std::vector<uint8_t> cut;  // per mesh edge: on a trace, the border or a feature curve
+  // Non-zero paths as mesh-vertex chains, each from a seed along cut edges straight on;
+  // sorted lexicographically.
+  std::vector<std::vector<int>> nonzero_chains;
+  // Per chain: the trace it is a prefix of, or −1 for a curve path (3).
+  std::vector<int> nonzero_trace;
+  int crossings = 0;  // crossings of two traces (an unordered pair at one vertex)
+};
+
+// Throws std::invalid_argument when feature_edge is not one flag per edge, a seed is not a
+// vertex, or max_angle_deg is negative or NaN.
+AngleBoundedGraph trace_angle_bounded(const QuadMeshTopology& topo,
+                                      const std::vector<uint8_t>& feature_edge,
+                                      const std::vector<int>& seeds, double max_angle_deg);
+
+}  // namespace bimdf::tmesh::detail
