@@ -85,6 +85,18 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
   cmd->add_flag("--coarse", o.coarse,
                 "The coarsest layout the separation constraints allow (zero-length arcs "
                 "collapse strips), tessellated at the requested density");
+  auto* relaxed = cmd->add_flag(
+      "--relaxed", o.relaxed,
+      "Allow irregular quad patches (opposite sides of different lengths, tessellated by a "
+      "pattern) at a cost per unit of flow turning a corner; no arc collapses");
+  cmd->add_option("--relaxed-weight", o.relaxed_weight,
+                  "With --relaxed: the cost per unit of flow turning a corner (smaller: more "
+                  "irregular patches)")
+      ->default_val(1.0)
+      ->check(CLI::PositiveNumber)
+      ->needs(relaxed);
+  // The coarse objective exists to collapse arcs, which relaxed quantization never does.
+  relaxed->excludes("--coarse");
   cmd->add_option("--cost", o.cost, "Deviation cost of each arc from its target length")
       ->default_val("quadratic")
       ->check(CLI::IsMember({"quadratic", "abs"}));
@@ -136,6 +148,8 @@ int run_requantize(const RequantizeCommandOptions& o) {
   ro.quantize.cost =
       o.cost == "abs" ? tmesh::DeviationCost::Absolute : tmesh::DeviationCost::Quadratic;
   ro.quantize.coarse = o.coarse;
+  ro.quantize.relaxed = o.relaxed;
+  ro.quantize.relaxed_weight = o.relaxed_weight;
   ro.quantize.threads = o.threads;
   ro.smoothing = o.smoothing;
   tmesh::TracedTMesh traced;
@@ -216,8 +230,11 @@ int run_requantize(const RequantizeCommandOptions& o) {
   j["layout_patches"] = layout.patch_corners.size();
   j["quads"] = collapsed.mesh.num_quads();
   j["collapsed_patches"] = collapsed.collapsed_patches;
+  j["irregular_patches"] = collapsed.irregular_patches;
   s << "layout        " << layout.patch_corners.size() << " patches ("
-    << collapsed.collapsed_patches << " T-mesh patches collapsed)\n";
+    << collapsed.collapsed_patches << " T-mesh patches collapsed"
+    << (o.relaxed ? ", " + std::to_string(collapsed.irregular_patches) + " irregular" : "")
+    << ")\n";
   s << "quad mesh     " << (o.mesh_out.empty() ? "(not written)" : o.mesh_out) << ": "
     << collapsed.mesh.num_quads() << " quads, " << collapsed.mesh.num_vertices() << " vertices\n";
 

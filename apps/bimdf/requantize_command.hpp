@@ -22,6 +22,8 @@ struct RequantizeCommandOptions {
   std::string layout_out, tmesh_out, tmesh_in;
   std::string cost = "quadratic";
   bool coarse = false;
+  bool relaxed = false;       // --relaxed: irregular quad patches allowed at a cost
+  double relaxed_weight = 1;  // --relaxed-weight: cost per unit of flow turning a corner
   int threads = 1;
   quant::SmoothingOptions smoothing;
   bool verbose = false;

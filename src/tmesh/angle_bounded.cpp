@@ -25,49 +25,60 @@ int ring_index(const QuadMeshTopology& topo, int v, int e) {
   return static_cast<int>(std::find(ring.begin(), ring.end(), e) - ring.begin());
 }
 
-// Directed edge 2e (from edge_vertices(e)[0]) or 2e + 1.
-int directed(const QuadMeshTopology& topo, int e, int from) {
-  return 2 * e + (topo.edge_vertices(e)[0] == from ? 0 : 1);
-}
-
 bool is_curve(const QuadMeshTopology& topo, const std::vector<uint8_t>& feature_edge, int e) {
   return topo.is_border_edge(e) || feature_edge[e];
 }
 
-class Tracer {
+// Lockstep runs of the angle rule over the full extended traces (`lines`): a trace never leaves
+// its line (each directed edge is taken by one line at most), so a run only decides how far
+// along its line each trace gets. run(tan_max) applies the rule at that threshold (a seed
+// `across` edges to the side of a trace `along` edges from its seed is within the angle when
+// across ≤ tan_max · along) and also finds the smallest threshold above it at which some trace
+// would have been done at a step where it was not: the run is the same for every threshold
+// below that (by induction over the steps, every move, crossing and decision is the same).
+class Lockstep {
  public:
-  Tracer(const QuadMeshTopology& topo, const std::vector<uint8_t>& feature_edge,
-         const std::vector<int>& seeds, double max_angle_deg, AngleBoundedGraph& g)
-      : topo_(topo),
-        g_(g),
-        angle_rule_(max_angle_deg < 90),
-        tan_alpha_(angle_rule_ ? std::tan(max_angle_deg * std::numbers::pi / 180) : 0),
-        stop_(topo.num_vertices(), 0),
+  Lockstep(const QuadMeshTopology& topo, const std::vector<uint8_t>& feature_edge,
+           const std::vector<int>& seeds, const std::vector<Trace>& lines)
+      : lines_(lines),
         slot_trace_(4 * size_t(topo.num_vertices()), -1),
-        slot_pos_(4 * size_t(topo.num_vertices()), -1),
-        taken_(2 * size_t(topo.num_edges()), 0) {
+        slot_pos_(4 * size_t(topo.num_vertices()), -1) {
+    std::vector<uint8_t> stop(topo.num_vertices(), 0);
     for (int e = 0; e < topo.num_edges(); ++e)
       if (is_curve(topo, feature_edge, e)) {
-        g.cut[e] = 1;
         const auto [a, b] = topo.edge_vertices(e);
-        stop_[a] = stop_[b] = 1;
+        stop[a] = stop[b] = 1;
       }
-    for (int v = 0; v < topo.num_vertices(); ++v) stop_[v] |= topo.is_border_vertex(v);
-    for (int s : seeds) stop_[s] = 1;
-    for (int s : seeds)
-      for (int e : topo.vertex_edges(s))
-        if (!is_curve(topo, feature_edge, e)) {
-          heads_.push_back({static_cast<int>(g.traces.size()), s, e, false});
-          g.traces.push_back({s, {s}, {}});
-        }
-    const size_t T = g.traces.size();
-    left_ok_.assign(T, 0);
-    right_ok_.assign(T, 0);
-    done_.assign(T, 0);
-    head_step_.assign(T, -1);
+    for (int v = 0; v < topo.num_vertices(); ++v) stop[v] |= topo.is_border_vertex(v);
+    for (int s : seeds) stop[s] = 1;
+    // Per line position p ≥ 1: the slot of its vertex and of the edge it arrives along, −1 at
+    // a stop vertex. Other vertices are interior and regular: their rings have 4 edges.
+    for (const Trace& t : lines) {
+      offset_.push_back(slot_of_.size());
+      slot_of_.push_back(-1);  // the seed
+      for (size_t p = 1; p < t.vertices.size(); ++p) {
+        const int v = t.vertices[p];
+        slot_of_.push_back(stop[v] ? -1 : 4 * v + ring_index(topo, v, t.edges[p - 1]));
+      }
+    }
   }
 
-  void run() {
+  void run(double tan_max) {
+    tan_max_ = tan_max;
+    const size_t T = lines_.size();
+    for (size_t t = 0; t < len_.size(); ++t)  // clear the previous run's slots
+      for (int p = 1; p <= len_[t]; ++p)
+        if (const int s = slot_of_[offset_[t] + p]; s >= 0) slot_trace_[s] = -1;
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    len_.assign(T, 0);
+    left_ratio_.assign(T, kNone);
+    right_ratio_.assign(T, kNone);
+    done_.assign(T, 0);
+    running_.assign(T, 1);
+    head_step_.assign(T, -1);
+    next_threshold_ = kNone;
+    heads_.clear();
+    for (size_t t = 0; t < T; ++t) heads_.push_back({static_cast<int>(t), false});
     for (int step = 1; !heads_.empty(); ++step) {
       move_all(step);
       for (const Moved& m : moved_) record_crossings(m);
@@ -75,127 +86,151 @@ class Tracer {
     }
   }
 
-  // (1) and (2): per trace, how many of its edges its non-zero path takes.
-  std::vector<int> path_lengths() const {
-    std::vector<int> len(g_.traces.size());
-    for (size_t t = 0; t < len.size(); ++t) len[t] = static_cast<int>(g_.traces[t].edges.size());
-    auto at_most = [&](int t, int p) { len[t] = std::min(len[t], p); };
-    for (const Crossing& c : crossings_) {
-      if (c.pb < c.pa) at_most(c.a, c.pa);
-      if (c.pa < c.pb) at_most(c.b, c.pb);
-      if (!angle_rule_) continue;
-      if (!within_angle(c.pb, c.pa)) at_most(c.b, c.pb);
-      if (!within_angle(c.pa, c.pb)) at_most(c.a, c.pa);
-    }
-    return len;
-  }
-
-  int num_crossings() const { return static_cast<int>(crossings_.size()); }
+  const std::vector<int>& lengths() const { return len_; }
+  double next_threshold() const { return next_threshold_; }
 
  private:
   struct Head {
-    int trace, at, edge;  // the edge it takes next from `at`
-    bool finishing;       // done, running on to a vertex a cut line passes through
+    int trace;
+    bool finishing;  // done, running on to a vertex a cut line passes through
   };
   struct Moved {
-    int trace, at, next_edge, slot;
+    int trace, slot;
     bool finishing;
   };
-
-  // |α| ≤ α_max for a seed `across` edges to the side of a trace `along` edges from its seed.
-  bool within_angle(int across, int along) const {
-    return across <= tan_alpha_ * along * (1 + kRatioTolerance);
-  }
 
   void move_all(int step) {
     moved_.clear();
     for (const Head& h : heads_) {
-      const int d = directed(topo_, h.edge, h.at);
-      // A taken directed edge leaves h.at: a trace (this one, by a closed grid line) has
-      // passed straight through h.at, so ending here leaves no dead end.
-      if (taken_[d]) continue;
-      taken_[d] = 1;
-      const int w = topo_.other_vertex(h.edge, h.at);
-      Trace& t = g_.traces[h.trace];
-      t.vertices.push_back(w);
-      t.edges.push_back(h.edge);
-      g_.cut[h.edge] = 1;
-      if (stop_[w]) continue;
-      // Not a stop vertex: interior and regular, so its ring has 4 edges; one trace at most
-      // arrives along each (a directed edge is taken once).
-      const int k = ring_index(topo_, w, h.edge);
-      slot_trace_[4 * size_t(w) + k] = h.trace;
-      slot_pos_[4 * size_t(w) + k] = step;
-      head_step_[h.trace] = step;
-      moved_.push_back({h.trace, w, topo_.straight_on(w, h.edge), k, h.finishing});
+      const int t = h.trace;
+      running_[t] = 0;
+      // At the end of its line: a stop vertex, or its next edge would repeat one it took, so
+      // it passed straight through here before and ending here leaves no dead end.
+      if (len_[t] == static_cast<int>(lines_[t].edges.size())) continue;
+      const int p = ++len_[t];
+      const int s = slot_of_[offset_[t] + p];
+      if (s < 0) continue;  // a stop vertex
+      slot_trace_[s] = t;
+      slot_pos_[s] = p;
+      head_step_[t] = step;
+      running_[t] = 1;
+      moved_.push_back({t, s, h.finishing});
     }
   }
 
   // The crossings of m's trace at its new vertex with traces that arrived there along the two
-  // perpendicular edges, before or in this step (the latter recorded by the lower trace id).
+  // perpendicular edges, before or in this step.
   void record_crossings(const Moved& m) {
-    const size_t base = 4 * size_t(m.at);
-    const int pi = slot_pos_[base + m.slot];
+    const int base = m.slot & ~3, k = m.slot & 3;
+    const int pi = slot_pos_[m.slot];
     for (int turn : {1, 3}) {
-      const int kk = (m.slot + turn) % 4;
-      const int j = slot_trace_[base + kk];
+      const int kk = base + (k + turn) % 4;
+      const int j = slot_trace_[kk];
       if (j < 0 || j == m.trace) continue;
-      const int pj = slot_pos_[base + kk];
-      if (pj == pi && j < m.trace) continue;
-      crossings_.push_back({m.trace, pi, j, pj});
-      // Leaving along ring[slot + 2], the left is its counter-clockwise neighbour ring[slot + 3].
+      const int pj = slot_pos_[kk];
+      // Leaving along ring[k + 2], the left is its counter-clockwise neighbour ring[k + 3].
       note_side(m.trace, /*left=*/turn == 3, pj, pi);
-      note_side(j, /*left=*/turn == 1, pi, pj);
+      if (pj < pi) note_side(j, /*left=*/turn == 1, pi, pj);  // else j notes it itself
     }
   }
 
+  // The smallest ratio across / along seen on each side: the trace is done once both are
+  // within tan_max.
   void note_side(int t, bool left, int across, int along) {
-    if (!angle_rule_ || !within_angle(across, along)) return;
-    (left ? left_ok_ : right_ok_)[t] = 1;
+    if (done_[t] || !running_[t]) return;  // it cannot matter any more
+    double& r = (left ? left_ratio_ : right_ratio_)[t];
+    r = std::min(r, double(across) / along);
   }
 
   void decide(int step) {
-    heads_.clear();
-    for (const Moved& m : moved_)
-      done_[m.trace] = angle_rule_ && (m.finishing || (left_ok_[m.trace] && right_ok_[m.trace]));
     for (const Moved& m : moved_) {
-      if (!done_[m.trace]) {
-        heads_.push_back({m.trace, m.at, m.next_edge, false});
-      } else if (!line_through(m, step)) {
-        heads_.push_back({m.trace, m.at, m.next_edge, true});
-      }
+      // The threshold that would make it done now (both ratios only decrease over the steps,
+      // so the last step before it is done, or stops, gives its smallest).
+      const double needed = std::max(left_ratio_[m.trace], right_ratio_[m.trace]);
+      done_[m.trace] = m.finishing || needed <= tan_max_;
+      if (!done_[m.trace]) next_threshold_ = std::min(next_threshold_, needed);
+    }
+    heads_.clear();
+    for (const Moved& m : moved_) {
+      if (!done_[m.trace])
+        heads_.push_back({m.trace, false});
+      else if (!line_through(m, step))
+        heads_.push_back({m.trace, true});
+      else
+        running_[m.trace] = 0;
     }
   }
 
-  // Whether a cut line passes straight through m's vertex once this step's decisions are made
-  // (m itself is done, and stop vertices never get here).
+  // Whether a trace line crosses m's vertex straight through, perpendicular to m, once this
+  // step's decisions are made (m itself is done; stop vertices never get here). A line along
+  // m's own (an opposite trace) does not count: m would end inside an arc, not at a T-mesh
+  // vertex where its non-zero path can end.
   bool line_through(const Moved& m, int step) const {
-    const size_t base = 4 * size_t(m.at);
-    for (int k = 0; k < 4; ++k) {
-      const int j = slot_trace_[base + k];
+    const int base = m.slot & ~3;
+    for (int turn : {1, 3}) {
+      const int s = base + ((m.slot & 3) + turn) % 4;
+      const int j = slot_trace_[s];
       if (j < 0) continue;
-      const int r = slot_pos_[base + k];
-      if (r < static_cast<int>(g_.traces[j].edges.size())) return true;  // j moved on
+      if (slot_pos_[s] < len_[j]) return true;                              // j moved on
       if (j != m.trace && head_step_[j] == step && !done_[j]) return true;  // j will move on
     }
     return false;
   }
 
-  const QuadMeshTopology& topo_;
-  AngleBoundedGraph& g_;
-  const bool angle_rule_;
-  const double tan_alpha_;
-  std::vector<uint8_t> stop_;
-  // Per interior regular vertex and ring index k: the trace that arrived along ring edge k,
-  // and after how many edges.
+  const std::vector<Trace>& lines_;
+  std::vector<size_t> offset_;  // per line, into slot_of_
+  std::vector<int> slot_of_;
+  // Per interior regular vertex v and ring index k, slot 4v + k: the trace that arrived along
+  // ring edge k in this run, and after how many edges.
   std::vector<int> slot_trace_, slot_pos_;
-  std::vector<uint8_t> taken_;  // per directed edge
-  std::vector<uint8_t> left_ok_, right_ok_, done_;
+  double tan_max_ = 0;
+  std::vector<int> len_;
+  std::vector<double> left_ratio_, right_ratio_;
+  std::vector<uint8_t> done_, running_;
   std::vector<int> head_step_;  // the last step in which the trace arrived somewhere
   std::vector<Head> heads_;
   std::vector<Moved> moved_;
-  std::vector<Crossing> crossings_;
+  double next_threshold_ = 0;
 };
+
+// Every crossing of the final traces, once, in vertex order.
+std::vector<Crossing> crossings_of(const QuadMeshTopology& topo, const std::vector<Trace>& traces) {
+  std::vector<int> slot_trace(4 * size_t(topo.num_vertices()), -1);
+  std::vector<int> slot_pos(slot_trace.size(), -1);
+  for (size_t t = 0; t < traces.size(); ++t)
+    for (size_t p = 1; p < traces[t].vertices.size(); ++p) {
+      const int v = traces[t].vertices[p];
+      if (topo.valence(v) != 4 || topo.is_border_vertex(v)) continue;
+      const size_t s = 4 * size_t(v) + ring_index(topo, v, traces[t].edges[p - 1]);
+      slot_trace[s] = static_cast<int>(t);
+      slot_pos[s] = static_cast<int>(p);
+    }
+  std::vector<Crossing> out;
+  for (size_t base = 0; base < slot_trace.size(); base += 4)
+    for (int k = 0; k < 4; ++k) {
+      const size_t s = base + k, s2 = base + (k + 1) % 4;
+      const int a = slot_trace[s], b = slot_trace[s2];
+      if (a >= 0 && b >= 0 && a != b) out.push_back({a, slot_pos[s], b, slot_pos[s2]});
+    }
+  return out;
+}
+
+// (1) and (2): per trace, how many of its edges its non-zero path takes.
+std::vector<int> path_lengths(const std::vector<Trace>& traces,
+                              const std::vector<Crossing>& crossings, bool angle_rule,
+                              double tan_max) {
+  std::vector<int> len(traces.size());
+  for (size_t t = 0; t < len.size(); ++t) len[t] = static_cast<int>(traces[t].edges.size());
+  auto at_most = [&](int t, int p) { len[t] = std::min(len[t], p); };
+  for (const Crossing& c : crossings) {
+    if (c.pb < c.pa) at_most(c.a, c.pa);
+    if (c.pa < c.pb) at_most(c.b, c.pb);
+    if (!angle_rule) continue;
+    if (c.pb > tan_max * c.pa) at_most(c.b, c.pb);
+    if (c.pa > tan_max * c.pb) at_most(c.a, c.pa);
+  }
+  return len;
+}
 
 // (3): from each seed along each border or feature edge, straight on to the next seed. A
 // non-seed vertex on a curve is regular with the curve passing straight on; the checks only
@@ -278,13 +313,37 @@ AngleBoundedGraph trace_angle_bounded(const QuadMeshTopology& topo,
   if (!(max_angle_deg >= 0))
     throw std::invalid_argument("trace_angle_bounded: the maximum angle must be ≥ 0 degrees");
 
+  // The union of the lockstep runs over every threshold from tan α up (see the header): one
+  // run per threshold at which the outcome changes, each at the next threshold of the last.
+  const bool angle_rule = max_angle_deg < 90;
+  const double tan_max =
+      angle_rule ? std::tan(max_angle_deg * std::numbers::pi / 180) * (1 + kRatioTolerance) : 0;
   AngleBoundedGraph g;
+  g.traces = trace_extended_motorcycle_graph(topo, feature_edge, seeds);
+  if (angle_rule) {
+    Lockstep lockstep(topo, feature_edge, seeds, g.traces);
+    std::vector<int> keep(g.traces.size(), 0);
+    for (double t = tan_max;;) {
+      lockstep.run(t);
+      ++g.lockstep_runs;
+      for (size_t i = 0; i < keep.size(); ++i) keep[i] = std::max(keep[i], lockstep.lengths()[i]);
+      const double next = lockstep.next_threshold();
+      if (!std::isfinite(next)) break;
+      t = next * (1 + kRatioTolerance);
+    }
+    for (size_t i = 0; i < keep.size(); ++i) {
+      g.traces[i].vertices.resize(keep[i] + 1);
+      g.traces[i].edges.resize(keep[i]);
+    }
+  }
   g.cut.assign(topo.num_edges(), 0);
-  Tracer tracer(topo, feature_edge, seeds, max_angle_deg, g);
-  tracer.run();
-  g.crossings = tracer.num_crossings();
+  for (int e = 0; e < topo.num_edges(); ++e) g.cut[e] = is_curve(topo, feature_edge, e);
+  for (const Trace& t : g.traces)
+    for (int e : t.edges) g.cut[e] = 1;
 
-  const std::vector<int> len = tracer.path_lengths();
+  const std::vector<Crossing> crossings = crossings_of(topo, g.traces);
+  g.crossings = static_cast<int>(crossings.size());
+  const std::vector<int> len = path_lengths(g.traces, crossings, angle_rule, tan_max);
   for (size_t t = 0; t < g.traces.size(); ++t) {
     const auto& v = g.traces[t].vertices;
     g.nonzero_chains.emplace_back(v.begin(), v.begin() + len[t] + 1);

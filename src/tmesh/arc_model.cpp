@@ -1,7 +1,9 @@
 // The arc Bi-MDF model of a quad T-mesh (paper §4.2.1–4.2.2, Fig. 10b) and the independent
-// check of its solutions. See tmesh/quantize.hpp for the construction.
+// check of its solutions, with the relaxed variant's corner edges (§4.2.4, Fig. 10c). See
+// tmesh/quantize.hpp for the construction.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "bimdf/tmesh/quantize.hpp"
@@ -15,17 +17,40 @@ double side_target(const TMesh& tmesh, int patch, int side) {
   return length;
 }
 
+std::string check_nonzero_paths(const TMesh& tmesh, const std::vector<int64_t>& arc_length) {
+  for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m) {
+    int64_t sum = 0;
+    for (int h : tmesh.nonzero_paths[m]) sum += arc_length[TMesh::arc_of(h)];
+    if (sum == 0) return "non-zero path " + std::to_string(m) + " has length 0";
+  }
+  return "";
+}
+
 }  // namespace
 
 ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
                          const MinOneConstraints& constraints, const ArcModelOptions& options) {
+  if (options.relaxed) {
+    if (options.coarse)
+      throw std::invalid_argument(
+          "relaxed quantization has no coarse objective (it collapses "
+          "no arc)");
+    if (!(options.relaxed_weight > 0) || !std::isfinite(options.relaxed_weight))
+      throw std::invalid_argument("relaxed_weight must be positive and finite");
+    if (std::find(options.arc_pattern.begin(), options.arc_pattern.end(), 0) !=
+        options.arc_pattern.end())
+      throw std::invalid_argument("relaxed quantization cannot fix an arc to 0");
+  }
   ArcModel model;
   Problem& pb = model.problem;
   const int np = tmesh.num_patches();
   model.side_node.resize(np);
   model.pair_edge.resize(np);
   std::vector<std::array<int64_t, 2>> pair_lower(np, {0, 0});
-  for (const SideRef& s : constraints.sides) pair_lower[s[0]][s[1] % 2] = 1;
+  // A side's min-one constraint is its pair edge's lower bound only while the pair edge
+  // carries the whole side; relaxed, the arcs' lower bounds of 1 imply it anyway.
+  if (!options.relaxed)
+    for (const SideRef& s : constraints.sides) pair_lower[s[0]][s[1] % 2] = 1;
   for (int p = 0; p < np; ++p)
     for (int k = 0; k < 4; ++k) model.side_node[p][k] = pb.add_node(0);
   // A pair edge's flow is the patch's width (or height): its deviation from the mean of the
@@ -43,7 +68,17 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
           {model.side_node[p][pair], false}, End{model.side_node[p][pair + 2], false},
           pair_lower[p][pair], kInfinity, options.side_weight > 0 ? cost : Cost::zero());
     }
-  std::vector<int64_t> arc_lower(tmesh.num_arcs(), 0), arc_upper(tmesh.num_arcs(), kInfinity);
+  if (options.relaxed) {
+    model.corner_edge.resize(np);
+    for (int p = 0; p < np; ++p)
+      for (int k = 0; k < 4; ++k)
+        model.corner_edge[p][k] =
+            pb.add_edge({model.side_node[p][k], false}, End{model.side_node[p][(k + 1) % 4], false},
+                        0, kInfinity, Cost::linear(options.relaxed_weight));
+  }
+  // Relaxed: every arc ≥ 1 — zero arcs next to irregular patches may degenerate (§4.2.4).
+  std::vector<int64_t> arc_lower(tmesh.num_arcs(), options.relaxed ? 1 : 0);
+  std::vector<int64_t> arc_upper(tmesh.num_arcs(), kInfinity);
   for (int a : constraints.arcs) arc_lower[a] = 1;
   if (!options.arc_pattern.empty())
     for (int a = 0; a < tmesh.num_arcs(); ++a) {
@@ -94,12 +129,39 @@ std::string check_quantization(const TMesh& tmesh, const std::vector<int64_t>& a
                std::to_string(k + 2) + " have lengths " + std::to_string(x) + " and " +
                std::to_string(y);
     }
-  for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m) {
-    int64_t sum = 0;
-    for (int h : tmesh.nonzero_paths[m]) sum += arc_length[TMesh::arc_of(h)];
-    if (sum == 0) return "non-zero path " + std::to_string(m) + " has length 0";
+  return check_nonzero_paths(tmesh, arc_length);
+}
+
+std::string check_relaxed_quantization(const TMesh& tmesh, const std::vector<int64_t>& arc_length) {
+  if (static_cast<int>(arc_length.size()) != tmesh.num_arcs())
+    return "expected " + std::to_string(tmesh.num_arcs()) + " arc lengths, got " +
+           std::to_string(arc_length.size());
+  for (int a = 0; a < tmesh.num_arcs(); ++a)
+    if (arc_length[a] < 1)
+      return "arc " + std::to_string(a) + ": length " + std::to_string(arc_length[a]) +
+             ", relaxed quantization needs ≥ 1";
+  for (int p = 0; p < tmesh.num_patches(); ++p) {
+    std::array<int64_t, 4> x;
+    for (int k = 0; k < 4; ++k) x[k] = side_length(tmesh, p, k, arc_length);
+    // Sides are non-empty paths of arcs ≥ 1, so only the parity can fail; still checked,
+    // as this check must not trust the T-mesh's validation either.
+    for (int k = 0; k < 4; ++k)
+      if (x[k] < 1)
+        return "patch " + std::to_string(p) + ": side " + std::to_string(k) + " has length " +
+               std::to_string(x[k]);
+    if ((x[0] + x[1] + x[2] + x[3]) % 2 != 0)
+      return "patch " + std::to_string(p) + ": perimeter " + std::to_string(x[0]) + " + " +
+             std::to_string(x[1]) + " + " + std::to_string(x[2]) + " + " + std::to_string(x[3]) +
+             " = " + std::to_string(x[0] + x[1] + x[2] + x[3]) + " is odd";
   }
-  return "";
+  return check_nonzero_paths(tmesh, arc_length);
+}
+
+bool is_irregular_patch(const TMesh& tmesh, int patch, const std::vector<int64_t>& arc_length) {
+  for (int k = 0; k < 2; ++k)
+    if (side_length(tmesh, patch, k, arc_length) != side_length(tmesh, patch, k + 2, arc_length))
+      return true;
+  return false;
 }
 
 }  // namespace bimdf::tmesh

@@ -2,7 +2,8 @@
 // T-mesh vertex, an interior point of an arc, or an interior grid point of a patch. Zero arcs
 // and zero-width patches identify points (union–find); the classes are the output vertices.
 // Points are numbered T-mesh vertices first, then arc points arc by arc, then patch points
-// patch by patch, so that everything below is deterministic.
+// patch by patch, so that everything below is deterministic. Irregular patches (relaxed
+// quantization) take their pattern from tmesh/irregular_patch.hpp.
 #include "bimdf/tmesh/collapse.hpp"
 
 #include <algorithm>
@@ -15,6 +16,8 @@
 #include <tuple>
 #include <utility>
 #include <vector>
+
+#include "tmesh/irregular_patch.hpp"
 
 namespace bimdf::tmesh {
 namespace {
@@ -91,7 +94,12 @@ struct Collapser {
   std::vector<int> arc_first, patch_first;   // first interior point of each arc / patch
   int num_points = 0;
   std::vector<Vec3> point_position;
-  std::vector<std::vector<int>> grid;  // per non-degenerate patch: point ids, (W+1) × (H+1)
+  // Per non-degenerate patch: point ids, (W+1) × (H+1) — or, for an irregular patch, one per
+  // vertex of its pattern.
+  std::vector<std::vector<int>> grid;
+  bool allow_irregular = false;
+  std::vector<quant::QuadPattern> pattern;  // per patch: its pattern if irregular (else empty)
+  bool irregular(int p) const { return !pattern[p].quads.empty(); }
 
   int arc_point(int a, int64_t k) const {
     if (k == 0) return tm.arc_ends[a][0];
@@ -135,6 +143,7 @@ struct Collapser {
   void number_points();
   void place_vertices_and_arcs();
   void place_patch_interior(int p);
+  void place_irregular_interior(int p);
   Vec2 side_coordinate(int p, int k, int64_t position) const;
 };
 
@@ -149,13 +158,21 @@ void Collapser::check_input() const {
     if (len[a] < 0 || len[a] > kMaxPoints)
       throw std::invalid_argument("arc " + std::to_string(a) + ": length " +
                                   std::to_string(len[a]) + ", expected 0 to 2^28");
-  for (int p = 0; p < np; ++p)
+  for (int p = 0; p < np; ++p) {
+    const std::array<int64_t, 4> x{side_length(p, 0), side_length(p, 1), side_length(p, 2),
+                                   side_length(p, 3)};
+    if (allow_irregular && (x[0] != x[2] || x[1] != x[3])) {
+      if (const std::string issue = detail::irregular_sides_issue(x); !issue.empty())
+        throw std::invalid_argument("patch " + std::to_string(p) + ": " + issue);
+      continue;
+    }
     for (int k = 0; k < 2; ++k)
-      if (side_length(p, k) != side_length(p, k + 2))
+      if (x[k] != x[k + 2])
         throw std::invalid_argument(
             "patch " + std::to_string(p) + ": sides " + std::to_string(k) + " and " +
             std::to_string(k + 2) + " have lengths " + std::to_string(side_length(p, k)) + " and " +
             std::to_string(side_length(p, k + 2)) + ", opposite sides must be equal");
+  }
 }
 
 void Collapser::number_points() {
@@ -172,10 +189,18 @@ void Collapser::number_points() {
   }
   patch_first.resize(tm.num_patches());
   size.resize(tm.num_patches());
+  pattern.resize(tm.num_patches());
   for (int p = 0; p < tm.num_patches(); ++p) {
     size[p] = {side_length(p, 0), side_length(p, 1)};
     patch_first[p] = static_cast<int>(n);
-    if (size[p][0] > 0 && size[p][1] > 0) grow((size[p][0] - 1) * (size[p][1] - 1));
+    if (size[p] != std::array<int64_t, 2>{side_length(p, 2), side_length(p, 3)}) {
+      // check_input let it through: allow_irregular, every side ≥ 1, even perimeter.
+      pattern[p] =
+          detail::irregular_pattern({size[p][0], size[p][1], side_length(p, 2), side_length(p, 3)});
+      grow(pattern[p].num_vertices() - pattern[p].perimeter());
+    } else if (size[p][0] > 0 && size[p][1] > 0) {
+      grow((size[p][0] - 1) * (size[p][1] - 1));
+    }
   }
   num_points = static_cast<int>(n);
 }
@@ -258,19 +283,10 @@ void Collapser::place_patch_interior(int p) {
       bottom[i] = side_coordinate(p, 0, i), top[i] = side_coordinate(p, 2, W - i);
     for (int j = 0; j <= H; ++j)
       right[j] = side_coordinate(p, 1, j), left[j] = side_coordinate(p, 3, H - j);
-    const PatchGrid& g = tm.patch_grid[p];
     for (int j = 1; j < H; ++j)
-      for (int i = 1; i < W; ++i) {
-        const Vec2 uv = coons(bottom, top, left, right, i, j);
-        const double u = std::clamp(uv[0], 0.0, double(g.width));
-        const double v = std::clamp(uv[1], 0.0, double(g.height));
-        const int i0 = std::min(static_cast<int>(u), g.width - 1);
-        const int j0 = std::min(static_cast<int>(v), g.height - 1);
-        const auto& x = mesh->vertices;
+      for (int i = 1; i < W; ++i)
         point_position[id(i, j)] =
-            lerp(lerp(x[g.at(i0, j0)], x[g.at(i0 + 1, j0)], u - i0),
-                 lerp(x[g.at(i0, j0 + 1)], x[g.at(i0 + 1, j0 + 1)], u - i0), v - j0);
-      }
+            detail::point_on_grid(*mesh, tm.patch_grid[p], coons(bottom, top, left, right, i, j));
     return;
   }
   // Without a grid: the mean position of the points at each side position.
@@ -300,6 +316,27 @@ void Collapser::place_patch_interior(int p) {
     for (int i = 1; i < W; ++i) point_position[id(i, j)] = coons(bottom, top, left, right, i, j);
 }
 
+// An irregular patch's pattern interior: Tutte's embedding with the boundary at the side
+// points, in the patch grid's coordinates (then on the input quad there) or in 3D.
+void Collapser::place_irregular_interior(int p) {
+  const quant::QuadPattern& pat = pattern[p];
+  const std::vector<int>& points = grid[p];
+  const int P = pat.perimeter();
+  const bool on_grid = has_grid(p);
+  std::vector<Vec3> boundary;
+  for (int k = 0, b = 0; k < 4; ++k)
+    for (int s = 0; s < pat.sides[k]; ++s, ++b) {
+      const Vec2 uv = on_grid ? side_coordinate(p, k, s) : Vec2{0, 0};
+      boundary.push_back(on_grid ? Vec3{uv[0], uv[1], 0} : point_position[points[b]]);
+    }
+  const std::vector<Vec3> inside = detail::tutte_interior(pat, boundary);
+  for (int v = P; v < pat.num_vertices(); ++v)
+    point_position[points[v]] =
+        on_grid
+            ? detail::point_on_grid(*mesh, tm.patch_grid[p], {inside[v - P][0], inside[v - P][1]})
+            : inside[v - P];
+}
+
 // The conformity checks of collapse.hpp on the finished mesh; `describe` names an output
 // vertex by what it was made of.
 template <class Describe>
@@ -310,10 +347,12 @@ void check_result(const QuadMesh& out, const std::vector<std::array<int, 2>>& qu
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
         if (out.quads[f][a] == out.quads[f][b])
-          throw CollapseError("patch " + std::to_string(out.quad_patch[f]) + ": quad (" +
-                              std::to_string(quad_cell[f][0]) + ", " +
-                              std::to_string(quad_cell[f][1]) + ") would have two corners at " +
-                              describe(out.quads[f][a]));
+          throw CollapseError("patch " + std::to_string(out.quad_patch[f]) + ": " +
+                              (quad_cell[f][1] < 0  // an irregular patch's pattern quad
+                                   ? "pattern quad " + std::to_string(quad_cell[f][0])
+                                   : "quad (" + std::to_string(quad_cell[f][0]) + ", " +
+                                         std::to_string(quad_cell[f][1]) + ")") +
+                              " would have two corners at " + describe(out.quads[f][a]));
   // Edges as (smaller vertex, larger vertex, quad, direction), grouped by sorting.
   std::vector<std::tuple<int, int, int, bool>> edges;
   edges.reserve(size_t(4) * nq);
@@ -372,9 +411,9 @@ void check_result(const QuadMesh& out, const std::vector<std::array<int, 2>>& qu
 }  // namespace
 
 CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                      const std::vector<int64_t>& arc_length,
-                                      const QuadMesh* mesh) {
-  Collapser c{tmesh, incidence, arc_length, mesh, {}, {}, {}, 0, {}, {}};
+                                      const std::vector<int64_t>& arc_length, const QuadMesh* mesh,
+                                      bool allow_irregular) {
+  Collapser c{tmesh, incidence, arc_length, mesh, {}, {}, {}, 0, {}, {}, allow_irregular, {}};
   c.check_input();
   c.number_points();
   const int np = tmesh.num_patches();
@@ -389,6 +428,11 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
     const int64_t W = c.size[p][0], H = c.size[p][1];
     std::array<std::vector<int>, 4> side;
     for (int k = 0; k < 4; ++k) side[k] = c.side_points(p, k);
+    if (c.irregular(p)) {
+      ++result.irregular_patches;
+      c.grid[p] = detail::pattern_points(c.pattern[p], side, c.patch_first[p]);
+      continue;
+    }
     if (W == 0 || H == 0) {
       // Side k (walked forward) meets side k+2 walked backwards, position by position.
       ++result.collapsed_patches;
@@ -420,10 +464,23 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
     const int64_t W = c.size[p][0], H = c.size[p][1];
     if (W == 0 || H == 0) continue;
     const std::vector<int>& g = c.grid[p];
-    const auto vertex = [&](int64_t i, int64_t j) {
-      int& v = vertex_of[classes.find(g[size_t(j) * (W + 1) + i])];
+    const auto vertex_of_point = [&](int point) {
+      int& v = vertex_of[classes.find(point)];
       if (v < 0) v = out.num_vertices(), out.vertices.push_back({0, 0, 0});
       return v;
+    };
+    if (c.irregular(p)) {
+      const auto& quads = c.pattern[p].quads;
+      for (size_t f = 0; f < quads.size(); ++f) {
+        out.quads.push_back({vertex_of_point(g[quads[f][0]]), vertex_of_point(g[quads[f][1]]),
+                             vertex_of_point(g[quads[f][2]]), vertex_of_point(g[quads[f][3]])});
+        out.quad_patch.push_back(p);
+        quad_cell.push_back({static_cast<int>(f), -1});
+      }
+      continue;
+    }
+    const auto vertex = [&](int64_t i, int64_t j) {
+      return vertex_of_point(g[size_t(j) * (W + 1) + i]);
     };
     for (int64_t j = 0; j < H; ++j)
       for (int64_t i = 0; i < W; ++i) {
@@ -437,7 +494,10 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
   // Positions: every point's own, then each vertex at the mean of its points.
   c.place_vertices_and_arcs();
   for (int p = 0; p < np; ++p)
-    if (!c.grid[p].empty()) c.place_patch_interior(p);
+    if (c.irregular(p))
+      c.place_irregular_interior(p);
+    else if (!c.grid[p].empty())
+      c.place_patch_interior(p);
   const int nv = out.num_vertices();
   std::vector<int> class_size(nv, 0);
   std::vector<std::vector<int>> vertex_arcs(tmesh.num_vertices());

@@ -38,6 +38,8 @@ TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incid
   model_options.cost = options.cost;
   model_options.coarse = options.coarse;
   model_options.side_weight = options.side_weight;
+  model_options.relaxed = options.relaxed;
+  model_options.relaxed_weight = options.relaxed_weight;
   ArcModel model = build_arc_model(tmesh, incidence, result.constraints, model_options);
   result.time_model_s = t.lap();
   solve_model(model, options, result);
@@ -56,9 +58,12 @@ TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incid
       throw std::logic_error("coarse quantization: the fixed zero pattern became infeasible");
   }
   if (result.arc_length.empty()) return result;
-  if (const std::string error = check_quantization(tmesh, result.arc_length); !error.empty())
-    throw std::logic_error("quantization failed its check: " + error);
+  const std::string error = options.relaxed ? check_relaxed_quantization(tmesh, result.arc_length)
+                                            : check_quantization(tmesh, result.arc_length);
+  if (!error.empty()) throw std::logic_error("quantization failed its check: " + error);
   for (int64_t x : result.arc_length) result.zero_arcs += x == 0;
+  for (int p = 0; p < tmesh.num_patches(); ++p)
+    result.irregular_patches += is_irregular_patch(tmesh, p, result.arc_length);
   return result;
 }
 

@@ -29,8 +29,8 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   r.time_quantize_s = t.lap();
   if (r.quantization.arc_length.empty()) return r;
   const bool on_mesh = mesh && !tm.patch_grid.empty();
-  r.collapsed =
-      collapse_and_tessellate(tm, r.incidence, r.quantization.arc_length, on_mesh ? mesh : nullptr);
+  r.collapsed = collapse_and_tessellate(tm, r.incidence, r.quantization.arc_length,
+                                        on_mesh ? mesh : nullptr, options.quantize.relaxed);
   r.time_collapse_s = t.lap();
   if (on_mesh)
     smooth_requantized(*mesh, tm, r.incidence, r.traced.feature_edges, r.traced.feature_corners,

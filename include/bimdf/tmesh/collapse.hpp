@@ -24,6 +24,15 @@
 // An output vertex made of several points sits at their mean. Output vertices are numbered
 // in order of first use by the quads, which follow the patches and, within a patch, its grid
 // row by row (j, then i): the same input always gives the same mesh.
+//
+// Irregular patches (a relaxed quantization, tmesh/quantize.hpp; only with allow_irregular):
+// a patch whose opposite sides differ — every side ≥ 1, even perimeter — is tessellated with
+// make_quad_pattern(X0, X1, X2, X3) (quant/pattern.hpp) instead of a grid. The pattern's
+// boundary vertices are the patch's side points in walking order (both run counter-clockwise
+// from corner 0), its interior vertices new points inside the patch (numbered like a grid's,
+// so CollapsedVertex::patches names the patch), placed by Tutte's embedding with the boundary
+// at the side points: in the patch grid's coordinates, then bilinearly on the input quad there,
+// or in 3D without grids. Their quads follow the pattern's order; the checks above apply.
 #pragma once
 
 #include <array>
@@ -56,13 +65,16 @@ struct CollapsedMesh {
   std::vector<CollapsedVertex> origin;  // per output vertex
   int collapsed_patches = 0;            // patches with width or height 0
   int zero_arcs = 0;
+  int irregular_patches = 0;  // patches tessellated by a pattern (allow_irregular only)
 };
 
 // Collapses and tessellates. `mesh` is the quad mesh the T-mesh was traced on (nullptr when
 // the T-mesh has no grids). Throws std::invalid_argument if `arc_length` has the wrong size, a
-// negative entry, or opposite sides of a patch differ; CollapseError as above.
+// negative entry, or opposite sides of a patch differ — unless allow_irregular, which then
+// requires of such a patch every side ≥ 1 and an even perimeter; CollapseError as above.
 CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                      const std::vector<int64_t>& arc_length, const QuadMesh* mesh);
+                                      const std::vector<int64_t>& arc_length, const QuadMesh* mesh,
+                                      bool allow_irregular = false);
 
 // A conforming quad layout read off a quad mesh: its base complex (separatrices traced
 // straight through regular vertices from every singular vertex, and the border, cut the

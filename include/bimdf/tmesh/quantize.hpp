@@ -21,6 +21,23 @@
 // al. 2021's) is linear instead: each arc costs, per unit of length, half the target extent of each
 // of its patches across it (the other side pair's target), which approximates the total length of
 // the layout's lines — the coarsest layout the non-zero paths allow.
+//
+// Relaxed quantization (§4.2.4, Fig. 10c; `relaxed`): each patch also gets a tail–tail *corner
+// edge* between the side nodes of each pair of adjacent sides (k, k+1), lower bound 0, no upper
+// bound, linear cost `relaxed_weight` per unit. Flow may then turn a corner instead of crossing
+// the patch, so opposite sides may differ: side k's length is its pair edge's flow plus its two
+// corner edges' flows. Every patch still has an even perimeter (twice the sum of its inner
+// edges' flows) and no side longer than the other three together, so make_quad_pattern
+// (quant/pattern.hpp) tessellates it. Self-loops and the single-node template of Fig. 10d,
+// which would also allow a side longer than the other three, are not modelled. The pair edges
+// keep their `side_weight` deviation, which in a relaxed patch prices the straight-through
+// flow only: a turn then pays that deviation too.
+//
+// Relaxed quantization and zero-length arcs do not mix (§4.2.4: an irregular patch with zero
+// sides can degenerate, and collapsing one is not defined), so in relaxed mode every arc has
+// lower bound 1: nothing collapses, every side is ≥ 1 and every non-zero path holds without
+// Algorithm 2's constraints (still computed and reported). A relaxed quantization is checked
+// by check_relaxed_quantization; the coarse objective, whose point is zero arcs, is refused.
 #pragma once
 
 #include <array>
@@ -58,6 +75,14 @@ struct ArcModelOptions {
   double side_weight = 1;
   // Optional, one entry per arc: −1 free, 0 fixed to 0, 1 at least 1 (empty: all free).
   std::vector<int8_t> arc_pattern;
+  // Fig. 10c's corner edges (see above): every arc ≥ 1, irregular patches allowed. With
+  // coarse, or an arc_pattern entry 0, build_arc_model throws std::invalid_argument.
+  bool relaxed = false;
+  // Cost per unit of flow turning a corner, > 0. The default 1 prices one turn like one
+  // quad edge of absolute deviation on an arc — a turn adds two irregular vertices to the
+  // patch, so it should cost about what a unit of rounding does; smaller values favour
+  // irregular patches, larger ones regular grids.
+  double relaxed_weight = 1;
 };
 
 struct ArcModel {
@@ -65,6 +90,8 @@ struct ArcModel {
   std::vector<int> arc_edge;                  // per arc: its network edge
   std::vector<std::array<int, 2>> pair_edge;  // per patch: inner edge of sides 0/2, of 1/3
   std::vector<std::array<int, 4>> side_node;  // per patch and side
+  // Relaxed only (else empty): per patch, the corner edge between sides k and k+1 (mod 4).
+  std::vector<std::array<int, 4>> corner_edge;
 };
 
 // Builds the Bi-MDF problem with the min-one constraints as lower bounds of 1.
@@ -79,6 +106,16 @@ std::vector<int64_t> arc_lengths(const ArcModel& model, const std::vector<int64_
 // valid, else the first violation ("patch 3: sides 0 and 2 have lengths 4 and 5").
 std::string check_quantization(const TMesh& tmesh, const std::vector<int64_t>& arc_length);
 
+// The same for a relaxed quantization: one length per arc, all ≥ 1 (relaxed mode collapses
+// nothing), every patch's perimeter even and every side ≥ 1 — what make_quad_pattern needs —
+// and every non-zero path ≥ 1. Opposite sides may differ. Returns "" when valid, else the
+// first violation ("patch 3: perimeter 4 + 1 + 2 + 2 = 9 is odd").
+std::string check_relaxed_quantization(const TMesh& tmesh, const std::vector<int64_t>& arc_length);
+
+// Whether a patch has a pair of opposite sides of different lengths (an irregular patch of a
+// relaxed quantization).
+bool is_irregular_patch(const TMesh& tmesh, int patch, const std::vector<int64_t>& arc_length);
+
 struct QuantizeOptions {
   DeviationCost cost = DeviationCost::Quadratic;
   double side_weight = 1;  // ArcModelOptions::side_weight
@@ -86,6 +123,10 @@ struct QuantizeOptions {
   // with that pattern fixed (zero arcs 0, others ≥ 1) and the deviation costs gives the
   // lengths at the T-mesh's target density.
   bool coarse = false;
+  // ArcModelOptions::relaxed / relaxed_weight; the result is checked with
+  // check_relaxed_quantization. relaxed with coarse throws std::invalid_argument.
+  bool relaxed = false;
+  double relaxed_weight = 1;
   int threads = 1;
   double time_limit = -1;  // seconds per solve, < 0: none
 };
@@ -97,7 +138,8 @@ struct TMeshQuantization {
   std::vector<int64_t> arc_length;
   MinOneConstraints constraints;
   int zero_arcs = 0;
-  int nodes = 0, edges = 0;  // of the model
+  int irregular_patches = 0;  // patches whose opposite sides differ (relaxed only)
+  int nodes = 0, edges = 0;   // of the model
   double time_model_s = 0, time_solve_s = 0;
   Solution solution;  // the last solve's (stats for -v)
 };
