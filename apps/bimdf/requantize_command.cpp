@@ -97,6 +97,11 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
       ->needs(relaxed);
   // The coarse objective exists to collapse arcs, which relaxed quantization never does.
   relaxed->excludes("--coarse");
+  cmd->add_option("--max-angle", o.max_angle,
+                  "Trace the angle-bounded extended motorcycle graph (Lyon et al. 2021): "
+                  "separatrices may deviate from the input's grid lines by at most this many "
+                  "degrees (90: unbounded); default 20 with --coarse, else the plain graph")
+      ->check(CLI::Range(0.0, 90.0));
   cmd->add_option("--cost", o.cost, "Deviation cost of each arc from its target length")
       ->default_val("quadratic")
       ->check(CLI::IsMember({"quadratic", "abs"}));
@@ -162,6 +167,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
       throw UsageError{o.tmesh_in + " refers to a quad mesh's vertices: give that mesh as MESH"};
   } else {
     ro.trace.sharp_angle_deg = o.sharp_angle;
+    ro.trace.max_angle_deg = o.max_angle >= 0 ? o.max_angle : o.coarse ? kDefaultCoarseAngle : -1;
     ro.trace.density = density(o, &mesh);
     if (!o.feature_file.empty())
       ro.trace.feature_edges = tmesh::read_quad_feature_file(o.feature_file, mesh);
@@ -191,6 +197,10 @@ int run_requantize(const RequantizeCommandOptions& o) {
   j["min_one_constraints"] = q.constraints.size();
   j["seeds"] = r.traced.seeds.size();
   j["traces"] = r.traced.traces;
+  if (ro.trace.max_angle_deg >= 0) {
+    j["max_angle"] = ro.trace.max_angle_deg;
+    j["crossings"] = r.traced.crossings;
+  }
   j["model"] = {{"nodes", q.nodes}, {"edges", q.edges}};
   s << "t-mesh        " << tm.num_patches() << " patches, " << tm.num_arcs() << " arcs, "
     << r.traced.seeds.size() << " seeds, " << tm.nonzero_paths.size() << " non-zero paths ("

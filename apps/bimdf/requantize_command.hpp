@@ -22,6 +22,7 @@ struct RequantizeCommandOptions {
   std::string layout_out, tmesh_out, tmesh_in;
   std::string cost = "quadratic";
   bool coarse = false;
+  double max_angle = -1;  // < 0: not given (--coarse then uses kDefaultCoarseAngle)
   bool relaxed = false;       // --relaxed: irregular quad patches allowed at a cost
   double relaxed_weight = 1;  // --relaxed-weight: cost per unit of flow turning a corner
   int threads = 1;
@@ -29,6 +30,9 @@ struct RequantizeCommandOptions {
   bool verbose = false;
   OutputOptions out;  // --json, --report FILE
 };
+
+// The angle bound --coarse uses when --max-angle is not given.
+inline constexpr double kDefaultCoarseAngle = 20;
 
 CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& options);
 

@@ -29,6 +29,22 @@ bool is_curve(const QuadMeshTopology& topo, const std::vector<uint8_t>& feature_
   return topo.is_border_edge(e) || feature_edge[e];
 }
 
+// Where traces end: the border, feature curves and seeds. Traces pass only through the other
+// vertices, which are interior and regular (their rings have 4 edges); only there do they cross.
+std::vector<uint8_t> stop_vertices(const QuadMeshTopology& topo,
+                                   const std::vector<uint8_t>& feature_edge,
+                                   const std::vector<int>& seeds) {
+  std::vector<uint8_t> stop(topo.num_vertices(), 0);
+  for (int e = 0; e < topo.num_edges(); ++e)
+    if (is_curve(topo, feature_edge, e)) {
+      const auto [a, b] = topo.edge_vertices(e);
+      stop[a] = stop[b] = 1;
+    }
+  for (int v = 0; v < topo.num_vertices(); ++v) stop[v] |= topo.is_border_vertex(v);
+  for (int s : seeds) stop[s] = 1;
+  return stop;
+}
+
 // Lockstep runs of the angle rule over the full extended traces (`lines`): a trace never leaves
 // its line (each directed edge is taken by one line at most), so a run only decides how far
 // along its line each trace gets. run(tan_max) applies the rule at that threshold (a seed
@@ -38,21 +54,13 @@ bool is_curve(const QuadMeshTopology& topo, const std::vector<uint8_t>& feature_
 // below that (by induction over the steps, every move, crossing and decision is the same).
 class Lockstep {
  public:
-  Lockstep(const QuadMeshTopology& topo, const std::vector<uint8_t>& feature_edge,
-           const std::vector<int>& seeds, const std::vector<Trace>& lines)
+  Lockstep(const QuadMeshTopology& topo, const std::vector<uint8_t>& stop,
+           const std::vector<Trace>& lines)
       : lines_(lines),
         slot_trace_(4 * size_t(topo.num_vertices()), -1),
         slot_pos_(4 * size_t(topo.num_vertices()), -1) {
-    std::vector<uint8_t> stop(topo.num_vertices(), 0);
-    for (int e = 0; e < topo.num_edges(); ++e)
-      if (is_curve(topo, feature_edge, e)) {
-        const auto [a, b] = topo.edge_vertices(e);
-        stop[a] = stop[b] = 1;
-      }
-    for (int v = 0; v < topo.num_vertices(); ++v) stop[v] |= topo.is_border_vertex(v);
-    for (int s : seeds) stop[s] = 1;
     // Per line position p ≥ 1: the slot of its vertex and of the edge it arrives along, −1 at
-    // a stop vertex. Other vertices are interior and regular: their rings have 4 edges.
+    // a stop vertex.
     for (const Trace& t : lines) {
       offset_.push_back(slot_of_.size());
       slot_of_.push_back(-1);  // the seed
@@ -194,13 +202,14 @@ class Lockstep {
 };
 
 // Every crossing of the final traces, once, in vertex order.
-std::vector<Crossing> crossings_of(const QuadMeshTopology& topo, const std::vector<Trace>& traces) {
+std::vector<Crossing> crossings_of(const QuadMeshTopology& topo, const std::vector<uint8_t>& stop,
+                                   const std::vector<Trace>& traces) {
   std::vector<int> slot_trace(4 * size_t(topo.num_vertices()), -1);
   std::vector<int> slot_pos(slot_trace.size(), -1);
   for (size_t t = 0; t < traces.size(); ++t)
     for (size_t p = 1; p < traces[t].vertices.size(); ++p) {
       const int v = traces[t].vertices[p];
-      if (topo.valence(v) != 4 || topo.is_border_vertex(v)) continue;
+      if (stop[v]) continue;
       const size_t s = 4 * size_t(v) + ring_index(topo, v, traces[t].edges[p - 1]);
       slot_trace[s] = static_cast<int>(t);
       slot_pos[s] = static_cast<int>(p);
@@ -258,7 +267,7 @@ void add_curve_paths(const QuadMeshTopology& topo, const std::vector<uint8_t>& f
 
 // Drops every chain whose edge set equals (keeping the lexicographically smallest vertex
 // sequence) or strictly includes another's, then sorts. Each mesh edge lies on few chains (a
-// directed edge starts at most one trace's path, a curve edge at most two curve paths), so
+// directed edge lies on one trace at most, a curve edge on two curve paths at most), so
 // the candidates for including chain q are those through q's smallest edge.
 void prune_and_sort(const QuadMeshTopology& topo, std::vector<std::vector<int>>& chains,
                     std::vector<int>& chain_trace) {
@@ -318,10 +327,11 @@ AngleBoundedGraph trace_angle_bounded(const QuadMeshTopology& topo,
   const bool angle_rule = max_angle_deg < 90;
   const double tan_max =
       angle_rule ? std::tan(max_angle_deg * std::numbers::pi / 180) * (1 + kRatioTolerance) : 0;
+  const std::vector<uint8_t> stop = stop_vertices(topo, feature_edge, seeds);
   AngleBoundedGraph g;
   g.traces = trace_extended_motorcycle_graph(topo, feature_edge, seeds);
   if (angle_rule) {
-    Lockstep lockstep(topo, feature_edge, seeds, g.traces);
+    Lockstep lockstep(topo, stop, g.traces);
     std::vector<int> keep(g.traces.size(), 0);
     for (double t = tan_max;;) {
       lockstep.run(t);
@@ -336,12 +346,12 @@ AngleBoundedGraph trace_angle_bounded(const QuadMeshTopology& topo,
       g.traces[i].edges.resize(keep[i]);
     }
   }
-  g.cut.assign(topo.num_edges(), 0);
+  g.cut.resize(topo.num_edges());
   for (int e = 0; e < topo.num_edges(); ++e) g.cut[e] = is_curve(topo, feature_edge, e);
   for (const Trace& t : g.traces)
     for (int e : t.edges) g.cut[e] = 1;
 
-  const std::vector<Crossing> crossings = crossings_of(topo, g.traces);
+  const std::vector<Crossing> crossings = crossings_of(topo, stop, g.traces);
   g.crossings = static_cast<int>(crossings.size());
   const std::vector<int> len = path_lengths(g.traces, crossings, angle_rule, tan_max);
   for (size_t t = 0; t < g.traces.size(); ++t) {

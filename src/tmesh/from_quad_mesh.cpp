@@ -16,6 +16,7 @@
 #include "bimdf/error.hpp"
 #include "bimdf/io.hpp"
 #include "io/text_scan.hpp"
+#include "tmesh/angle_bounded.hpp"
 #include "tmesh/motorcycle.hpp"
 #include "tmesh/quad_mesh_topology.hpp"
 
@@ -107,24 +108,32 @@ std::vector<std::vector<int>> curve_chains(const QuadMeshTopology& topo,
   return chains;
 }
 
+// `chains` (mesh-vertex chains along arcs, with the trace each came from: ≥ 0, or −2 for a
+// curve piece) and the cylinder half-loops become the T-mesh's non-zero paths.
+void add_nonzero_paths(TracedTMesh& out, std::vector<std::vector<int>> chains,
+                       std::vector<int> chain_trace) {
+  for (const auto& loop : out.cylinder_half_loops) {
+    chains.push_back(loop);
+    chain_trace.push_back(-1);
+  }
+  out.nonzero_path_trace = std::move(chain_trace);
+  out.tmesh.nonzero_paths = half_arcs_along(out.tmesh, chains);
+}
+
 void add_nonzero_paths_per_trace(TracedTMesh& out, const QuadMeshTopology& topo,
                                  const std::vector<uint8_t>& feature) {
   std::vector<std::vector<int>> chains;
-  out.nonzero_path_trace.clear();
+  std::vector<int> chain_trace;
   for (size_t t = 0; t < out.trace_vertices.size(); ++t)
     if (out.trace_vertices[t].size() >= 2) {
       chains.push_back(out.trace_vertices[t]);
-      out.nonzero_path_trace.push_back(static_cast<int>(t));
+      chain_trace.push_back(static_cast<int>(t));
     }
-  for (const auto& loop : out.cylinder_half_loops) {
-    chains.push_back(loop);
-    out.nonzero_path_trace.push_back(-1);
-  }
   for (auto& chain : curve_chains(topo, feature, out.seeds)) {
     chains.push_back(std::move(chain));
-    out.nonzero_path_trace.push_back(-2);
+    chain_trace.push_back(-2);
   }
-  out.tmesh.nonzero_paths = half_arcs_along(out.tmesh, chains);
+  add_nonzero_paths(out, std::move(chains), std::move(chain_trace));
 }
 
 }  // namespace
@@ -178,10 +187,22 @@ TracedTMesh trace_tmesh(const QuadMesh& mesh, const TraceOptions& options,
   if (out.seeds.empty() && !any_border && !any_feature)
     throw InputError(source, "", std::string("the mesh has ") + detail::kClosedGridLines);
 
-  const detail::MotorcycleGraph graph = detail::trace_motorcycle_graph(topo, feature, out.seeds);
+  // The plain motorcycle graph, or Lyon et al.'s angle-bounded extended one with its own
+  // non-zero paths (angle_bounded.hpp).
+  const bool angle_bounded = options.max_angle_deg >= 0;
+  detail::MotorcycleGraph graph;
+  detail::AngleBoundedGraph bounded;
+  if (angle_bounded) {
+    bounded = detail::trace_angle_bounded(topo, feature, out.seeds, options.max_angle_deg);
+    graph.traces = bounded.traces;
+    graph.cut = bounded.cut;
+  } else {
+    graph = detail::trace_motorcycle_graph(topo, feature, out.seeds);
+  }
   const std::vector<detail::Trace> extended =
       detail::trace_extended_motorcycle_graph(topo, feature, out.seeds);
   out.traces = static_cast<int>(graph.traces.size());
+  out.crossings = bounded.crossings;
   for (const auto& t : graph.traces) out.trace_vertices.push_back(t.vertices);
   std::vector<uint8_t> on_extended(E, 0);
   for (const auto& t : extended) {
@@ -269,7 +290,13 @@ TracedTMesh trace_tmesh(const QuadMesh& mesh, const TraceOptions& options,
     tm.patch_grid.push_back(r.grid);
   }
 
-  add_nonzero_paths_per_trace(out, topo, feature);
+  if (angle_bounded) {
+    std::vector<int> chain_trace = bounded.nonzero_trace;
+    for (int& t : chain_trace) t = t < 0 ? -2 : t;  // its curve pieces
+    add_nonzero_paths(out, bounded.nonzero_chains, std::move(chain_trace));
+  } else {
+    add_nonzero_paths_per_trace(out, topo, feature);
+  }
   validate_tmesh(tm, source);
   return out;
 }

@@ -2,88 +2,21 @@
 // non-zero path; the exact solve equals a CBC MILP written directly on the T-mesh (integer arc
 // lengths, equal opposite sides, min-one rows), sharing nothing with the Bi-MDF model; every
 // result passes check_quantization; the coarse stage collapses what it may.
-#include <Cbc_C_Interface.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
-#include <memory>
 #include <random>
-#include <stdexcept>
 
 #include "bimdf/tmesh/quantize.hpp"
 #include "test_helpers.hpp"
+#include "tmesh_grid_support.hpp"
 
 namespace bimdf::tmesh {
 namespace {
 
-// A C × R grid of cells with random column widths / row heights as targets, some horizontally
-// adjacent cells merged into one patch (their shared arc removed, which leaves T-junctions),
-// and random straight non-zero paths along the grid lines.
-struct GridTMesh {
-  TMesh tmesh;
-  int columns = 0, rows = 0;
-};
-
-GridTMesh random_grid_tmesh(std::mt19937& rng, int columns, int rows, int paths) {
-  GridTMesh g;
-  g.columns = columns, g.rows = rows;
-  TMesh& t = g.tmesh;
-  const auto vertex = [&](int i, int j) { return j * (columns + 1) + i; };
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i <= columns; ++i) t.vertices.push_back({double(i), double(j), 0});
-  std::uniform_real_distribution<double> length(0.2, 4.0);
-  std::vector<double> width(columns), height(rows);
-  for (double& w : width) w = length(rng);
-  for (double& h : height) h = length(rng);
-  // Which cells merge with their right neighbour (pairs never overlap).
-  std::vector<std::vector<char>> merge(rows, std::vector<char>(columns, 0));
-  std::bernoulli_distribution coin(0.3);
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i + 1 < columns; ++i)
-      if (coin(rng)) merge[j][i] = 1, ++i;
-  const auto removed = [&](int i, int j) {  // the vertical arc at x = i in row j
-    return i > 0 && i < columns && merge[j][i - 1];
-  };
-  std::vector<std::vector<int>> h_arc(rows + 1, std::vector<int>(columns, -1));
-  std::vector<std::vector<int>> v_arc(columns + 1, std::vector<int>(rows, -1));
-  const auto add_arc = [&](int a, int b, double target) {
-    t.arc_ends.push_back({a, b});
-    t.arc_target.push_back(target);
-    return t.num_arcs() - 1;
-  };
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i < columns; ++i)
-      h_arc[j][i] = add_arc(vertex(i, j), vertex(i + 1, j), width[i]);
-  for (int i = 0; i <= columns; ++i)
-    for (int j = 0; j < rows; ++j)
-      if (!removed(i, j)) v_arc[i][j] = add_arc(vertex(i, j), vertex(i, j + 1), height[j]);
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i) {
-      const int last = merge[j][i] ? i + 1 : i;
-      std::array<std::vector<int>, 4> sides;
-      for (int k = i; k <= last; ++k) sides[0].push_back(2 * h_arc[j][k]);
-      sides[1].push_back(2 * v_arc[last + 1][j]);
-      for (int k = last; k >= i; --k) sides[2].push_back(2 * h_arc[j + 1][k] + 1);
-      sides[3].push_back(2 * v_arc[i][j] + 1);
-      t.patch_sides.push_back(sides);
-      i = last;
-    }
-  std::uniform_int_distribution<int> pick(0, 1 << 20);
-  for (int m = 0; m < paths; ++m) {
-    std::vector<int> path;
-    if (pick(rng) % 2) {  // horizontal, along y = j
-      const int j = pick(rng) % (rows + 1), a = pick(rng) % columns, b = pick(rng) % columns;
-      for (int i = std::min(a, b); i <= std::max(a, b); ++i) path.push_back(2 * h_arc[j][i]);
-    } else {  // vertical, along x = i, over rows whose arc exists
-      const int i = pick(rng) % (columns + 1), j0 = pick(rng) % rows;
-      for (int j = j0; j < rows && v_arc[i][j] >= 0; ++j) path.push_back(2 * v_arc[i][j]);
-      if (path.empty()) path.push_back(2 * h_arc[0][0]);
-    }
-    t.nonzero_paths.push_back(path);
-  }
-  return g;
-}
+using gridsupport::GridTMesh;
+using gridsupport::milp_optimum;
+using gridsupport::random_grid_tmesh;
 
 // Whether `constraints` imply path m directly: one of its arcs, or a side (or that side's
 // opposite, whose length is equal) lying wholly on the path.
@@ -101,84 +34,6 @@ bool implies_path(const TMesh& t, const MinOneConstraints& c, const std::vector<
       if (all) return true;
     }
   return false;
-}
-
-// The optimum of the T-mesh quantization as a MILP solved by CBC: integer x_a ∈ [0, cap],
-// Σ side k = Σ side k+2 per patch, and either Algorithm 2's constraints (x_a ≥ 1, Σ side ≥ 1)
-// or every non-zero path's Σ x ≥ 1. The cost (x − t)² or |x − t| through an epigraph variable
-// per arc, exact at integers. Returns NaN when infeasible.
-double milp_optimum(const TMesh& t, DeviationCost cost, double side_weight,
-                    const MinOneConstraints* constraints, int cap) {
-  std::unique_ptr<Cbc_Model, void (*)(Cbc_Model*)> model(Cbc_newModel(), Cbc_deleteModel);
-  Cbc_Model* m = model.get();
-  Cbc_setLogLevel(m, 0);
-  Cbc_setAllowableGap(m, 0.0);
-  Cbc_setAllowableFractionGap(m, 0.0);
-  // Columns: arc lengths x_a, then one width w per patch and side pair (a patch's side 0 / 2
-  // or 1 / 3 length, bound to both sides' sums below), then an epigraph variable for each.
-  const int n = t.num_arcs(), np = t.num_patches(), vars = n + 2 * np;
-  const int width_cap = cap * n;
-  for (int a = 0; a < n; ++a) Cbc_addCol(m, "", 0, cap, 0, 1, 0, nullptr, nullptr);
-  for (int w = 0; w < 2 * np; ++w) Cbc_addCol(m, "", 0, width_cap, 0, 1, 0, nullptr, nullptr);
-  for (int v = 0; v < vars; ++v) Cbc_addCol(m, "", 0, 1e30, 1, 0, 0, nullptr, nullptr);
-  std::vector<double> target(vars), weight(vars, 1);
-  for (int a = 0; a < n; ++a) target[a] = t.arc_target[a];
-  const auto side_target = [&](int p, int k) {
-    double sum = 0;
-    for (int h : t.patch_sides[p][k]) sum += t.arc_target[TMesh::arc_of(h)];
-    return sum;
-  };
-  for (int p = 0; p < np; ++p)
-    for (int k = 0; k < 2; ++k) {
-      target[n + 2 * p + k] = 0.5 * (side_target(p, k) + side_target(p, k + 2));
-      weight[n + 2 * p + k] = side_weight;
-    }
-  const auto c = [&](int v, double x) {
-    const double d = x - target[v];
-    return weight[v] * (cost == DeviationCost::Quadratic ? d * d : std::fabs(d));
-  };
-  for (int v = 0; v < vars; ++v)
-    for (int k = 0; k < (v < n ? cap : width_cap); ++k) {
-      // epigraph: y_v ≥ c(k) + (c(k+1) − c(k))(x_v − k)
-      const double slope = c(v, k + 1) - c(v, k);
-      int cols[2] = {vars + v, v};
-      double coefs[2] = {1, -slope};
-      Cbc_addRow(m, "", 2, cols, coefs, 'G', c(v, k) - slope * k);
-    }
-  const auto add_sum = [&](const std::vector<std::pair<int, double>>& terms, char sense,
-                           double rhs) {
-    std::vector<int> cols;
-    std::vector<double> coefs;
-    for (auto [a, w] : terms) cols.push_back(a), coefs.push_back(w);
-    Cbc_addRow(m, "", static_cast<int>(cols.size()), cols.data(), coefs.data(), sense, rhs);
-  };
-  for (int p = 0; p < np; ++p)
-    for (int k = 0; k < 4; ++k) {  // side k's arcs sum to its pair's width
-      std::vector<std::pair<int, double>> terms{{n + 2 * p + k % 2, -1}};
-      for (int h : t.patch_sides[p][k]) terms.push_back({TMesh::arc_of(h), 1});
-      add_sum(terms, 'E', 0);
-    }
-  if (constraints) {
-    for (int a : constraints->arcs) add_sum({{a, 1}}, 'G', 1);
-    for (const SideRef& s : constraints->sides) {
-      std::vector<std::pair<int, double>> terms;
-      for (int h : t.patch_sides[s[0]][s[1]]) terms.push_back({TMesh::arc_of(h), 1});
-      add_sum(terms, 'G', 1);
-    }
-  } else {
-    for (const auto& path : t.nonzero_paths) {
-      std::vector<std::pair<int, double>> terms;
-      for (int h : path) terms.push_back({TMesh::arc_of(h), 1});
-      add_sum(terms, 'G', 1);
-    }
-  }
-  Cbc_solve(m);
-  if (Cbc_isProvenInfeasible(m)) return std::nan("");
-  if (!Cbc_isProvenOptimal(m)) throw std::runtime_error("CBC did not prove optimality");
-  const double* x = Cbc_getColSolution(m);
-  double objective = 0;
-  for (int v = 0; v < vars; ++v) objective += c(v, std::round(x[v]));
-  return objective;
 }
 
 TEST(TMeshQuantize, AlgorithmTwoImpliesEveryPath) {

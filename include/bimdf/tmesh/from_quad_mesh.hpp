@@ -37,6 +37,13 @@ struct TraceOptions {
   std::vector<std::array<int, 2>> feature_edges;
   // Each arc's target length: its number of mesh edges times this.
   double density = 1;
+  // < 0: the plain motorcycle graph, with one non-zero path per trace (to where it stopped)
+  // and per border or feature curve piece. ≥ 0: Lyon et al.'s angle-bounded extended graph
+  // instead (src/tmesh/angle_bounded.hpp): traces run through collisions until they have
+  // crossed, on each side, a trace whose seed lies within this angle (≥ 90: until the border,
+  // a feature or a seed), and the non-zero paths keep every seed from sliding onto another's
+  // separatrix at a deviation above the angle — the T-mesh of `requantize --coarse`.
+  double max_angle_deg = -1;
 };
 
 struct TracedTMesh {
@@ -45,6 +52,7 @@ struct TracedTMesh {
   std::vector<int> feature_corners;               // mesh vertices
   std::vector<int> seeds;                         // mesh vertices that emitted traces
   int traces = 0;                                 // traces started
+  int crossings = 0;  // trace crossings (angle-bounded graph only)
   int extended_trace_edges = 0;                   // mesh edges on extended traces (diagnostics)
 
   // Trace i, as the mesh vertices it runs through (its seed first), in the motorcycle graph
