@@ -23,9 +23,9 @@ struct RequantizeCommandOptions {
   std::string cost = "quadratic";
   bool coarse = false;
   double max_angle = -1;  // < 0: not given (--coarse then uses kDefaultCoarseAngle)
+  int threads = 1;
   bool relaxed = false;       // --relaxed: irregular quad patches allowed at a cost
   double relaxed_weight = 1;  // --relaxed-weight: cost per unit of flow turning a corner
-  int threads = 1;
   quant::SmoothingOptions smoothing;
   bool verbose = false;
   OutputOptions out;  // --json, --report FILE

@@ -32,9 +32,7 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
                          const MinOneConstraints& constraints, const ArcModelOptions& options) {
   if (options.relaxed) {
     if (options.coarse)
-      throw std::invalid_argument(
-          "relaxed quantization has no coarse objective (it collapses "
-          "no arc)");
+      throw std::invalid_argument("relaxed quantization has no coarse stage: it collapses no arc");
     if (!(options.relaxed_weight > 0) || !std::isfinite(options.relaxed_weight))
       throw std::invalid_argument("relaxed_weight must be positive and finite");
     if (std::find(options.arc_pattern.begin(), options.arc_pattern.end(), 0) !=
@@ -68,6 +66,8 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
           {model.side_node[p][pair], false}, End{model.side_node[p][pair + 2], false},
           pair_lower[p][pair], kInfinity, options.side_weight > 0 ? cost : Cost::zero());
     }
+  // Fig. 10c's corner edges: flow entering side k may leave through side k ± 1, so side k's
+  // length is its pair edge's flow plus its two corner edges' flows.
   if (options.relaxed) {
     model.corner_edge.resize(np);
     for (int p = 0; p < np; ++p)

@@ -320,21 +320,18 @@ void Collapser::place_patch_interior(int p) {
 // points, in the patch grid's coordinates (then on the input quad there) or in 3D.
 void Collapser::place_irregular_interior(int p) {
   const quant::QuadPattern& pat = pattern[p];
-  const std::vector<int>& points = grid[p];
-  const int P = pat.perimeter();
   const bool on_grid = has_grid(p);
   std::vector<Vec3> boundary;
-  for (int k = 0, b = 0; k < 4; ++k)
-    for (int s = 0; s < pat.sides[k]; ++s, ++b) {
+  for (int k = 0; k < 4; ++k)
+    for (int s = 0; s < pat.sides[k]; ++s) {
       const Vec2 uv = on_grid ? side_coordinate(p, k, s) : Vec2{0, 0};
-      boundary.push_back(on_grid ? Vec3{uv[0], uv[1], 0} : point_position[points[b]]);
+      boundary.push_back(on_grid ? Vec3{uv[0], uv[1], 0}
+                                 : point_position[grid[p][boundary.size()]]);
     }
-  const std::vector<Vec3> inside = detail::tutte_interior(pat, boundary);
-  for (int v = P; v < pat.num_vertices(); ++v)
-    point_position[points[v]] =
-        on_grid
-            ? detail::point_on_grid(*mesh, tm.patch_grid[p], {inside[v - P][0], inside[v - P][1]})
-            : inside[v - P];
+  const std::vector<Vec3> inside = detail::place_pattern_interior(
+      pat, boundary, on_grid ? mesh : nullptr, on_grid ? &tm.patch_grid[p] : nullptr);
+  for (size_t i = 0; i < inside.size(); ++i)
+    point_position[grid[p][pat.perimeter() + i]] = inside[i];
 }
 
 // The conformity checks of collapse.hpp on the finished mesh; `describe` names an output

@@ -106,4 +106,13 @@ std::array<double, 3> point_on_grid(const QuadMesh& mesh, const PatchGrid& g,
   return r;
 }
 
+std::vector<std::array<double, 3>> place_pattern_interior(
+    const quant::QuadPattern& pattern, const std::vector<std::array<double, 3>>& boundary,
+    const QuadMesh* mesh, const PatchGrid* grid) {
+  std::vector<std::array<double, 3>> inside = tutte_interior(pattern, boundary);
+  if (mesh && grid)
+    for (auto& x : inside) x = point_on_grid(*mesh, *grid, {x[0], x[1]});
+  return inside;
+}
+
 }  // namespace bimdf::tmesh::detail

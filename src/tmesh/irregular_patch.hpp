@@ -48,6 +48,13 @@ std::vector<int> pattern_points(const quant::QuadPattern& pattern,
 std::vector<std::array<double, 3>> tutte_interior(
     const quant::QuadPattern& pattern, const std::vector<std::array<double, 3>>& boundary);
 
+// The pattern's interior vertices placed as the header explains, in pattern order: Tutte's
+// embedding with boundary vertex b at boundary[b] — a 3D position, or, given `mesh` and
+// `grid`, a grid coordinate (u, v, 0) whose embedding is then evaluated by point_on_grid.
+std::vector<std::array<double, 3>> place_pattern_interior(
+    const quant::QuadPattern& pattern, const std::vector<std::array<double, 3>>& boundary,
+    const QuadMesh* mesh, const PatchGrid* grid);
+
 // The point of the input mesh at grid coordinate (u, v) of a patch grid (clamped to it):
 // bilinear on the grid cell it falls in.
 std::array<double, 3> point_on_grid(const QuadMesh& mesh, const PatchGrid& grid,
