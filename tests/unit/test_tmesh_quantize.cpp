@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
+#include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/quantize.hpp"
 #include "test_helpers.hpp"
+#include "tmesh_fixtures.hpp"
 #include "tmesh_grid_support.hpp"
 
 namespace bimdf::tmesh {
@@ -95,6 +98,43 @@ TEST(TMeshQuantize, CoarseLayoutCollapsesWhatThePathsAllow) {
     ASSERT_GE(q.zero_arcs, fine.zero_arcs) << "trial " << trial;
     ASSERT_GE(q.objective, fine.objective - 1e-9);
   }
+}
+
+// T-meshes traced on random quad meshes (random Catmull–Clark meshes, randomly subdivided),
+// at random densities and with both graphs: Algorithm 2 implies every path, the quantization
+// passes the independent check, and on the small ones equals the CBC oracle's optimum.
+TEST(TMeshQuantize, TracedRandomMeshesMatchTheOracle) {
+  std::mt19937 rng(3);
+  int compared = 0, collapsing = 0;
+  for (uint64_t seed = 0; seed < uint64_t(testing::scaled(220)); ++seed) {
+    const QuadMesh mesh = test::random_quad_mesh(seed);
+    TraceOptions trace;
+    trace.density = std::uniform_real_distribution<double>(0.2, 1.0)(rng);
+    if (seed % 3 == 0) trace.max_angle_deg = 10.0 * (1 + seed % 5);
+    const TracedTMesh traced = trace_tmesh(mesh, trace, "random");
+    const TMesh& t = traced.tmesh;
+    const TMeshIncidence inc = validate_tmesh(t);
+    QuantizeOptions o;
+    o.cost = seed % 2 ? DeviationCost::Absolute : DeviationCost::Quadratic;
+    const TMeshQuantization q = quantize_tmesh(t, inc, o);
+    ASSERT_EQ(q.status, SolveStatus::Optimal) << "seed " << seed;
+    ASSERT_EQ(check_quantization(t, q.arc_length), "") << "seed " << seed;
+    for (const auto& path : t.nonzero_paths)
+      ASSERT_TRUE(implies_path(t, q.constraints, path)) << "seed " << seed;
+    collapsing += q.zero_arcs > 0;
+    if (t.num_arcs() > 30) continue;
+    // Lengths up to twice the largest target: far beyond any optimum, never binding.
+    double largest = 1;
+    for (double target : t.arc_target) largest = std::max(largest, target);
+    const int cap = static_cast<int>(std::ceil(2 * largest)) + 2;
+    for (int64_t x : q.arc_length) ASSERT_LT(x, cap);
+    const double oracle = milp_optimum(t, o.cost, o.side_weight, &q.constraints, cap);
+    ASSERT_TRUE(testing::relatively_close(q.objective, oracle))
+        << "seed " << seed << ": " << q.objective << " vs CBC " << oracle;
+    ++compared;
+  }
+  EXPECT_GE(compared, testing::scaled(220) / 8);
+  EXPECT_GE(collapsing, testing::scaled(220) / 30);  // 10 of 220 collapse arcs
 }
 
 TEST(TMeshQuantize, ThinColumnCollapsesUnlessAPathCrossesIt) {
