@@ -216,11 +216,16 @@ int run_requantize(const RequantizeCommandOptions& o) {
     return kNoSolution;
   }
   j["objective"] = q.objective;
+  j["repair_rounds"] = r.repair_rounds;
+  j["repair_constraints"] = r.repair_constraints.size();
   j["zero_arcs"] = q.zero_arcs;
   if (o.coarse) j["coarse_objective"] = q.coarse_objective;
   s << "objective     " << q.objective << (o.coarse ? " (coarse stage " : "")
     << (o.coarse ? std::to_string(q.coarse_objective) + ")" : "") << "; " << q.zero_arcs << " of "
     << tm.num_arcs() << " arcs quantized to 0\n";
+  if (r.repair_rounds > 0)
+    s << "separation    " << r.repair_rounds << " more solves: " << r.repair_constraints.size()
+      << " min-one bounds added where the collapse merged seeds\n";
   if (o.verbose) {
     s << "model         " << q.nodes << " nodes, " << q.edges << " edges; model "
       << ms(q.time_model_s) << ", solve " << ms(q.time_solve_s) << "\n";

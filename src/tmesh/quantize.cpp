@@ -34,6 +34,11 @@ TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incid
   TMeshQuantization result;
   detail::Stopwatch t;
   result.constraints = greedy_min_one_constraints(tmesh, incidence);
+  const MinOneConstraints& extra = options.extra_constraints;
+  result.constraints.arcs.insert(result.constraints.arcs.end(), extra.arcs.begin(),
+                                 extra.arcs.end());
+  result.constraints.sides.insert(result.constraints.sides.end(), extra.sides.begin(),
+                                  extra.sides.end());
   ArcModelOptions model_options;
   model_options.cost = options.cost;
   model_options.coarse = options.coarse;

@@ -2,6 +2,7 @@
 // output read back and measured independently (metrics.hpp), bad input with exact messages.
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -74,6 +75,21 @@ TEST_F(Requantize, ThinStripCollapses) {
   EXPECT_TRUE(m.manifold());
   EXPECT_EQ(m.inverted, 0);
   EXPECT_EQ(m.euler_characteristic, 1);
+}
+
+TEST_F(Requantize, CoarseLayoutsKeepEverySingularity) {
+  int repaired = 0;
+  for (uint64_t seed = 0; seed < 24; ++seed)
+    for (const char* angle : {"10", "45"}) {
+      const json j =
+          requantize(test::random_quad_mesh(seed), std::string("--coarse --max-angle ") + angle);
+      ASSERT_EQ(j.value("status", ""), "optimal") << "seed " << seed << ", " << angle << "°";
+      EXPECT_EQ(j["singularities_out"], j["singularities_in"]) << "seed " << seed;
+      repaired += j["repair_rounds"].get<int>() > 0;
+      const QuadMeshMetrics m = measure_quad_mesh(output());
+      EXPECT_TRUE(m.manifold()) << "seed " << seed;
+    }
+  EXPECT_GE(repaired, 1);  // 5 of 48: the paths alone would have merged singularities
 }
 
 TEST_F(Requantize, TMeshRoundTripGivesTheSameResult) {

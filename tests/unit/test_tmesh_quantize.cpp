@@ -10,6 +10,7 @@
 
 #include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/quantize.hpp"
+#include "bimdf/tmesh/requantize.hpp"
 #include "test_helpers.hpp"
 #include "tmesh_fixtures.hpp"
 #include "tmesh_grid_support.hpp"
@@ -156,6 +157,30 @@ TEST(TMeshQuantize, ThinColumnCollapsesUnlessAPathCrossesIt) {
   EXPECT_EQ(q.arc_length[1], 1);
   EXPECT_EQ(q.arc_length[4], 1);
   ASSERT_EQ(q.constraints.size(), 1);
+}
+
+TEST(TMeshQuantize, SeparationRepairKeepsMergedSeedsApart) {
+  // Three columns of one row, the middle one thin. Paths start at (1, 0) going left and at
+  // (2, 0) going right: both hold with the thin column collapsed, which merges their seeds.
+  // The repair must bound the column (its bottom arc or its width) and solve again.
+  std::mt19937 rng(1);
+  TracedTMesh traced;
+  traced.tmesh = random_grid_tmesh(rng, 3, 1, 0).tmesh;
+  TMesh& t = traced.tmesh;
+  for (int a : {0, 2, 3, 5}) t.arc_target[a] = 3;
+  for (int a : {1, 4}) t.arc_target[a] = 0.3;
+  t.nonzero_paths = {{2 * 0 + 1}, {2 * 2}};  // (1,0) → (0,0) and (2,0) → (3,0)
+  RequantizeOptions o;
+  RequantizeResult plain = requantize_tmesh(traced, nullptr, o, "test");
+  ASSERT_EQ(plain.repair_rounds, 1);
+  ASSERT_EQ(plain.repair_constraints.size(), 1);
+  EXPECT_EQ(plain.quantization.arc_length[1], 1);
+  EXPECT_EQ(plain.quantization.zero_arcs, 0);
+  // Without the merging paths nothing needs repair and the column collapses.
+  traced.tmesh.nonzero_paths = {{2 * 0}};
+  RequantizeResult collapsed = requantize_tmesh(traced, nullptr, o, "test");
+  EXPECT_EQ(collapsed.repair_rounds, 0);
+  EXPECT_EQ(collapsed.quantization.arc_length[1], 0);
 }
 
 TEST(TMeshQuantize, CheckNamesTheViolation) {

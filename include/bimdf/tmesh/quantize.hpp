@@ -119,6 +119,8 @@ bool is_irregular_patch(const TMesh& tmesh, int patch, const std::vector<int64_t
 struct QuantizeOptions {
   DeviationCost cost = DeviationCost::Quadratic;
   double side_weight = 1;  // ArcModelOptions::side_weight
+  // Min-one bounds added to Algorithm 2's (e.g. by requantize's separation repair).
+  MinOneConstraints extra_constraints;
   // Coarse layout: first the coarse objective decides which arcs are 0; then the same model
   // with that pattern fixed (zero arcs 0, others ≥ 1) and the deviation costs gives the
   // lengths at the T-mesh's target density.

@@ -24,6 +24,9 @@ struct RequantizeResult {
   TMeshIncidence incidence;
   TMeshQuantization quantization;  // status Infeasible: no mesh (collapsed is empty)
   CollapsedMesh collapsed;
+  // Separation repair: solves beyond the first, and the min-one bounds they added.
+  int repair_rounds = 0;
+  MinOneConstraints repair_constraints;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
 
@@ -33,8 +36,16 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 
 // Quantizes a given T-mesh (validated here; errors name `source`), collapses and tessellates
 // it, and — when it has patch grids and `mesh` is the quad mesh they index — smooths the
-// result on `mesh`. `options.trace` is not used. Throws CollapseError if the quantized
-// T-mesh does not collapse into a conforming mesh (see collapse.hpp).
+// result on `mesh`.
+//
+// Separation repair: the non-zero paths are sufficient in theory but, as constructed, not
+// always in practice (angle-bounded paths at large angles). When the collapse merges two
+// T-mesh vertices that start non-zero paths (seeds: singularities, corners), the zero arcs and
+// zero-width patches that joined them are found, the one with the longest target gets a
+// min-one bound, and the T-mesh is quantized again — the lazy constraints the paper (§4.2.3)
+// mentions as unexplored. Each round bounds an element that was 0, so this ends; all
+// elements bounded means nothing collapses. `options.trace` is not used. Throws CollapseError if
+// the quantized T-mesh does not collapse into a conforming mesh (see collapse.hpp).
 RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                   const RequantizeOptions& options, const std::string& source);
 
