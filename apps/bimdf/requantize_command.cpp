@@ -97,6 +97,13 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
       ->needs(relaxed);
   // The coarse objective exists to collapse arcs, which relaxed quantization never does.
   relaxed->excludes("--coarse");
+  cmd->add_option("--coarse-lengths", o.coarse_lengths,
+                  "With --coarse: `uniform` multiplies the coarse lengths by one integer for "
+                  "the requested density (keeps the coarse layout's base complex exactly), "
+                  "`fitted` solves again for lengths at that density with the zero arcs kept "
+                  "(better quads, but separatrices drift apart and the base complex grows)")
+      ->default_val("uniform")
+      ->check(CLI::IsMember({"fitted", "uniform"}));
   cmd->add_option("--max-angle", o.max_angle,
                   "Trace the angle-bounded extended motorcycle graph (Lyon et al. 2021): "
                   "separatrices may deviate from the input's grid lines by at most this many "
@@ -153,6 +160,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
   ro.quantize.cost =
       o.cost == "abs" ? tmesh::DeviationCost::Absolute : tmesh::DeviationCost::Quadratic;
   ro.quantize.coarse = o.coarse;
+  ro.quantize.coarse_uniform = o.coarse_lengths == "uniform";
   ro.quantize.relaxed = o.relaxed;
   ro.quantize.relaxed_weight = o.relaxed_weight;
   ro.quantize.threads = o.threads;
@@ -220,6 +228,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
   j["repair_constraints"] = r.repair_constraints.size();
   j["zero_arcs"] = q.zero_arcs;
   if (o.coarse) j["coarse_objective"] = q.coarse_objective;
+  if (o.coarse && q.coarse_factor > 0) j["coarse_factor"] = q.coarse_factor;
   s << "objective     " << q.objective << (o.coarse ? " (coarse stage " : "")
     << (o.coarse ? std::to_string(q.coarse_objective) + ")" : "") << "; " << q.zero_arcs << " of "
     << tm.num_arcs() << " arcs quantized to 0\n";

@@ -22,6 +22,7 @@ struct RequantizeCommandOptions {
   std::string layout_out, tmesh_out, tmesh_in;
   std::string cost = "quadratic";
   bool coarse = false;
+  std::string coarse_lengths = "uniform";
   double max_angle = -1;  // < 0: not given (--coarse then uses kDefaultCoarseAngle)
   int threads = 1;
   bool relaxed = false;       // --relaxed: irregular quad patches allowed at a cost

@@ -3,6 +3,8 @@
 // others' lengths).
 #include "bimdf/tmesh/quantize.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "bimdf/solve.hpp"
@@ -48,7 +50,25 @@ TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incid
   ArcModel model = build_arc_model(tmesh, incidence, result.constraints, model_options);
   result.time_model_s = t.lap();
   solve_model(model, options, result);
-  if (options.coarse && !result.arc_length.empty()) {
+  if (options.coarse && options.coarse_uniform && !result.arc_length.empty()) {
+    // Every coarse length times one integer k: the layout's combinatorics, and so its base
+    // complex, stay exactly those of the coarse stage; k brings the area (Σ width × height)
+    // closest to the targets' area.
+    result.coarse_objective = result.objective;
+    double area = 0, target_area = 0;
+    for (int p = 0; p < tmesh.num_patches(); ++p) {
+      double tw = 0, th = 0;
+      for (int h : tmesh.patch_sides[p][0]) tw += tmesh.arc_target[TMesh::arc_of(h)];
+      for (int h : tmesh.patch_sides[p][1]) th += tmesh.arc_target[TMesh::arc_of(h)];
+      target_area += tw * th;
+      area += static_cast<double>(side_length(tmesh, p, 0, result.arc_length) *
+                                  side_length(tmesh, p, 1, result.arc_length));
+    }
+    const int64_t k =
+        area > 0 ? std::max<int64_t>(1, std::llround(std::sqrt(target_area / area))) : 1;
+    for (int64_t& x : result.arc_length) x *= k;
+    result.coarse_factor = k;
+  } else if (options.coarse && !result.arc_length.empty()) {
     result.coarse_objective = result.objective;
     t.lap();
     model_options.coarse = false;

@@ -61,7 +61,7 @@ TEST(TMeshQuantize, AlgorithmTwoImpliesEveryPath) {
 TEST(TMeshQuantize, OptimumEqualsTheMilpOracle) {
   std::mt19937 rng(11);
   int collapsed = 0;
-  for (int trial = 0; trial < 200; ++trial) {
+  for (int trial = 0; trial < testing::scaled(200); ++trial) {
     const GridTMesh g = random_grid_tmesh(rng, 1 + trial % 4, 1 + (trial / 4) % 3, trial % 7);
     const TMesh& t = g.tmesh;
     const TMeshIncidence inc = validate_tmesh(t);
@@ -98,6 +98,13 @@ TEST(TMeshQuantize, CoarseLayoutCollapsesWhatThePathsAllow) {
     const TMeshQuantization fine = quantize_tmesh(g.tmesh, inc, o);
     ASSERT_GE(q.zero_arcs, fine.zero_arcs) << "trial " << trial;
     ASSERT_GE(q.objective, fine.objective - 1e-9);
+    // Uniform lengths: the coarse optimum times one factor, still valid.
+    o.coarse = o.coarse_uniform = true;
+    const TMeshQuantization u = quantize_tmesh(g.tmesh, inc, o);
+    ASSERT_EQ(check_quantization(g.tmesh, u.arc_length), "");
+    ASSERT_GE(u.coarse_factor, 1);
+    ASSERT_EQ(u.zero_arcs, q.zero_arcs) << "trial " << trial;
+    for (int64_t x : u.arc_length) ASSERT_EQ(x % u.coarse_factor, 0);
   }
 }
 

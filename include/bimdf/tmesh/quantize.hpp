@@ -121,10 +121,14 @@ struct QuantizeOptions {
   double side_weight = 1;  // ArcModelOptions::side_weight
   // Min-one bounds added to Algorithm 2's (e.g. by requantize's separation repair).
   MinOneConstraints extra_constraints;
-  // Coarse layout: first the coarse objective decides which arcs are 0; then the same model
-  // with that pattern fixed (zero arcs 0, others ≥ 1) and the deviation costs gives the
-  // lengths at the T-mesh's target density.
+  // Coarse layout: first the coarse objective decides which arcs are 0; then either (default)
+  // the same model with that pattern fixed (zero arcs 0, others ≥ 1) and the deviation costs
+  // gives the lengths at the T-mesh's target density, or (coarse_uniform) the coarse lengths
+  // are multiplied by one integer.
   bool coarse = false;
+  // With `coarse`: instead of the second solve, multiply every coarse length by one integer
+  // (chosen for the targets' total area), which keeps the coarse layout's base complex.
+  bool coarse_uniform = false;
   // ArcModelOptions::relaxed / relaxed_weight; the result is checked with
   // check_relaxed_quantization. relaxed with coarse throws std::invalid_argument.
   bool relaxed = false;
@@ -137,6 +141,7 @@ struct TMeshQuantization {
   SolveStatus status = SolveStatus::Infeasible;
   double objective = 0;         // of the (last) model solved
   double coarse_objective = 0;  // the coarse stage's, when coarse
+  int64_t coarse_factor = 0;    // with coarse_uniform: the factor k
   std::vector<int64_t> arc_length;
   MinOneConstraints constraints;
   int zero_arcs = 0;
