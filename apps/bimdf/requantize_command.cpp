@@ -1,5 +1,6 @@
 #include "requantize_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -82,6 +83,11 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                     ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
   scale->excludes(length)->excludes(faces);
   length->excludes(faces);
+  cmd->add_flag("--no-calibration", o.no_calibration,
+                "Use the density as given (each arc's target: its input edges times the density) "
+                "instead of fitting it to the quad count asked for; where singularities lie "
+                "closer than an output edge, separation then rounds short arcs up and "
+                "coarsenings make more quads than asked");
   cmd->add_flag("--coarse", o.coarse,
                 "The coarsest layout the separation constraints allow (zero-length arcs "
                 "collapse strips), tessellated at the requested density");
@@ -165,18 +171,19 @@ int run_requantize(const RequantizeCommandOptions& o) {
   ro.quantize.relaxed_weight = o.relaxed_weight;
   ro.quantize.threads = o.threads;
   ro.smoothing = o.smoothing;
+  double requested_density = 1;
   tmesh::TracedTMesh traced;
   const std::string source = o.tmesh_in.empty() ? o.mesh : o.tmesh_in;
   if (!o.tmesh_in.empty()) {
     traced.tmesh = tmesh::read_tmesh_json(o.tmesh_in);
-    const double factor = density(o, have_mesh ? &mesh : nullptr);
-    for (double& t : traced.tmesh.arc_target) t *= factor;
+    requested_density = density(o, have_mesh ? &mesh : nullptr);
+    for (double& t : traced.tmesh.arc_target) t *= requested_density;
     if (!traced.tmesh.patch_grid.empty() && !have_mesh)
       throw UsageError{o.tmesh_in + " refers to a quad mesh's vertices: give that mesh as MESH"};
   } else {
     ro.trace.sharp_angle_deg = o.sharp_angle;
     ro.trace.max_angle_deg = o.max_angle >= 0 ? o.max_angle : o.coarse ? kDefaultCoarseAngle : -1;
-    ro.trace.density = density(o, &mesh);
+    requested_density = ro.trace.density = density(o, &mesh);
     if (!o.feature_file.empty())
       ro.trace.feature_edges = tmesh::read_quad_feature_file(o.feature_file, mesh);
     traced = tmesh::trace_tmesh(mesh, ro.trace, o.mesh);
@@ -187,6 +194,10 @@ int run_requantize(const RequantizeCommandOptions& o) {
     tmesh::write_tmesh_json(text, traced.tmesh);
     write_text(o.tmesh_out, text.str(), inputs);
   }
+  // The quads the density asks for: the targets' area (for a traced mesh, its quads times the
+  // density squared). The coarse modes choose their own count.
+  if (!o.no_calibration && !o.coarse)
+    ro.target_quads = std::max<int64_t>(1, std::llround(tmesh::target_quads(traced.tmesh)));
   tmesh::RequantizeResult r;
   try {
     r = tmesh::requantize_tmesh(std::move(traced), have_mesh ? &mesh : nullptr, ro, source);
@@ -232,6 +243,15 @@ int run_requantize(const RequantizeCommandOptions& o) {
   s << "objective     " << q.objective << (o.coarse ? " (coarse stage " : "")
     << (o.coarse ? std::to_string(q.coarse_objective) + ")" : "") << "; " << q.zero_arcs << " of "
     << tm.num_arcs() << " arcs quantized to 0\n";
+  j["density"] = requested_density;
+  if (ro.target_quads > 0) {
+    j["target_quads"] = ro.target_quads;
+    j["density_factor"] = r.density_factor;
+    j["calibration_solves"] = r.calibration_solves;
+    s << "density       " << requested_density << " requested, × " << r.density_factor
+      << " to aim at " << ro.target_quads << " quads (" << r.calibration_solves
+      << " quantizations)\n";
+  }
   if (r.repair_rounds > 0)
     s << "separation    " << r.repair_rounds << " more solves: " << r.repair_constraints.size()
       << " min-one bounds added where the collapse merged seeds\n";

@@ -17,6 +17,7 @@ struct RequantizeCommandOptions {
   double scale = 1;      // output edge length as a multiple of the input's
   double edge_length = 0;
   int64_t target_faces = 0;
+  bool no_calibration = false;  // --no-calibration: the density as given, not fitted to quads
   double sharp_angle = 35;
   std::string feature_file;
   std::string layout_out, tmesh_out, tmesh_in;

@@ -29,7 +29,31 @@ void solve_model(const ArcModel& model, const QuantizeOptions& options, TMeshQua
   result.arc_length = arc_lengths(model, result.solution.flow);
 }
 
+// Σ over patches of the product of the mean lengths of the two side pairs, `side(p, k)` being
+// side k's length.
+template <class SideLength>
+double sum_of_patch_areas(const TMesh& tmesh, SideLength side) {
+  double area = 0;
+  for (int p = 0; p < tmesh.num_patches(); ++p)
+    area += (side(p, 0) + side(p, 2)) / 2 * ((side(p, 1) + side(p, 3)) / 2);
+  return area;
+}
+
 }  // namespace
+
+double quantized_quads(const TMesh& tmesh, const std::vector<int64_t>& arc_length) {
+  return sum_of_patch_areas(tmesh, [&](int p, int k) {
+    return static_cast<double>(side_length(tmesh, p, k, arc_length));
+  });
+}
+
+double target_quads(const TMesh& tmesh) {
+  return sum_of_patch_areas(tmesh, [&](int p, int k) {
+    double sum = 0;
+    for (int h : tmesh.patch_sides[p][k]) sum += tmesh.arc_target[TMesh::arc_of(h)];
+    return sum;
+  });
+}
 
 TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incidence,
                                  const QuantizeOptions& options) {
@@ -55,15 +79,8 @@ TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incid
     // complex, stay exactly those of the coarse stage; k brings the area (Σ width × height)
     // closest to the targets' area.
     result.coarse_objective = result.objective;
-    double area = 0, target_area = 0;
-    for (int p = 0; p < tmesh.num_patches(); ++p) {
-      double tw = 0, th = 0;
-      for (int h : tmesh.patch_sides[p][0]) tw += tmesh.arc_target[TMesh::arc_of(h)];
-      for (int h : tmesh.patch_sides[p][1]) th += tmesh.arc_target[TMesh::arc_of(h)];
-      target_area += tw * th;
-      area += static_cast<double>(side_length(tmesh, p, 0, result.arc_length) *
-                                  side_length(tmesh, p, 1, result.arc_length));
-    }
+    const double area = quantized_quads(tmesh, result.arc_length);
+    const double target_area = target_quads(tmesh);
     const int64_t k =
         area > 0 ? std::max<int64_t>(1, std::llround(std::sqrt(target_area / area))) : 1;
     for (int64_t& x : result.arc_length) x *= k;

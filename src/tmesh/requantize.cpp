@@ -2,6 +2,7 @@
 #include "bimdf/tmesh/requantize.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "core/stopwatch.hpp"
@@ -81,6 +82,48 @@ bool add_separation_bounds(const TMesh& tm, const std::vector<int64_t>& length,
   return added;
 }
 
+// Density calibration (requantize.hpp): quantizations of `tm` with every arc target scaled by
+// one factor, until the quad count is within the tolerance of options.target_quads. Secant
+// steps on log quads against log factor: quads grow about as the factor squared, less where
+// separation holds short arcs at 1 — the measured slope says how much less. Leaves tm's targets
+// scaled by the factor of the quantization returned (the closest one).
+TMeshQuantization calibrate_density(TMesh& tm, const TMeshIncidence& incidence,
+                                    const RequantizeOptions& options, RequantizeResult& r) {
+  const std::vector<double> base = tm.arc_target;
+  const double wanted = static_cast<double>(options.target_quads);
+  const auto quantize_at = [&](double factor) {
+    for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * factor;
+    ++r.calibration_solves;
+    return quantize_tmesh(tm, incidence, options.quantize);
+  };
+  double factor = 1;
+  TMeshQuantization best = quantize_at(factor);
+  if (best.arc_length.empty()) return best;
+  double quads = quantized_quads(tm, best.arc_length), best_quads = quads, best_factor = factor;
+  double last_factor = 0, last_quads = 0;
+  const double limit = std::max(1.0, options.max_density_change);
+  while (r.calibration_solves < options.calibration_solves && quads > 0 &&
+         std::abs(quads / wanted - 1) > options.calibration_tolerance) {
+    double slope = 2;
+    if (last_factor > 0 && last_quads > 0 && last_quads != quads) {
+      slope = std::log(quads / last_quads) / std::log(factor / last_factor);
+      if (!(slope >= 0.5 && slope <= 4)) slope = 2;
+    }
+    const double next =
+        std::clamp(factor * std::exp(std::log(wanted / quads) / slope), 1 / limit, limit);
+    if (std::abs(next / factor - 1) < 1e-6) break;  // at a limit
+    last_factor = factor, last_quads = quads, factor = next;
+    TMeshQuantization q = quantize_at(factor);
+    if (q.arc_length.empty()) break;
+    quads = quantized_quads(tm, q.arc_length);
+    if (std::abs(quads - wanted) < std::abs(best_quads - wanted))
+      best = std::move(q), best_quads = quads, best_factor = factor;
+  }
+  for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * best_factor;
+  r.density_factor = best_factor;
+  return best;
+}
+
 }  // namespace
 
 RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& options,
@@ -97,13 +140,15 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                   const RequantizeOptions& options, const std::string& source) {
   RequantizeResult r;
   r.traced = std::move(traced);
-  const TMesh& tm = r.traced.tmesh;
+  TMesh& tm = r.traced.tmesh;
   detail::Stopwatch t;
   r.incidence = validate_tmesh(tm, source);
   const bool on_mesh = mesh && !tm.patch_grid.empty();
   QuantizeOptions quantize = options.quantize;
-  for (;;) {
-    r.quantization = quantize_tmesh(tm, r.incidence, quantize);
+  const bool calibrate = options.target_quads > 0 && !quantize.coarse;
+  for (bool first = true;; first = false) {
+    r.quantization = first && calibrate ? calibrate_density(tm, r.incidence, options, r)
+                                        : quantize_tmesh(tm, r.incidence, quantize);
     r.time_quantize_s += t.lap();
     if (r.quantization.arc_length.empty()) return r;
     r.collapsed = collapse_and_tessellate(tm, r.incidence, r.quantization.arc_length,

@@ -107,6 +107,37 @@ TEST_F(Requantize, TMeshRoundTripGivesTheSameResult) {
   EXPECT_EQ(slurp(path("a.obj")).size(), slurp(path("b.obj")).size());
 }
 
+// The bundled bunny layout remeshed, then coarsened 2×: its 103 singularities lie closer than
+// two edges in places, so the separation constraints round short arcs up and the density as
+// given makes far more than a quarter of the quads; the calibrated density comes within 5%,
+// with the same singularities.
+TEST_F(Requantize, CalibrationHitsTheQuadCount) {
+  const std::string layout = std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj";
+  const std::string in = path("bunny_quads.obj");
+  CliRun r = run("remesh " + layout + " -o " + in);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const int input_quads = read_obj_quads(in).num_quads();
+  const double wanted = input_quads / 4.0;
+  r = run("requantize " + in + " -o " + path("out.obj") + " --json --scale 2 --no-calibration");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json plain = json::parse(r.out);
+  EXPECT_GT(plain["quads"].get<double>(), 1.2 * wanted);
+  EXPECT_FALSE(plain.contains("density_factor"));
+  r = run("requantize " + in + " -o " + path("out.obj") + " --json --scale 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["target_quads"], std::llround(wanted));
+  EXPECT_EQ(j["density"], 0.5);
+  EXPECT_LT(j["density_factor"].get<double>(), 1);
+  EXPECT_LE(j["calibration_solves"].get<int>(), 8);
+  const int quads = read_obj_quads(path("out.obj")).num_quads();
+  EXPECT_EQ(j["quads"], quads);
+  EXPECT_LE(std::abs(quads / wanted - 1), 0.05) << quads << " quads, wanted " << wanted;
+  EXPECT_EQ(j["singularities_out"], j["singularities_in"]);
+  const QuadMeshMetrics m = measure_quad_mesh(read_obj_quads(path("out.obj")));
+  EXPECT_TRUE(m.manifold());
+}
+
 TEST_F(Requantize, ClosedGridWithoutSingularitiesIsRefused) {
   const std::string in = write_mesh("torus.obj", test::torus_mesh(12, 12, 3));
   const CliRun r = run("requantize " + in + " -o " + path("out.obj"));

@@ -190,6 +190,44 @@ TEST(TMeshQuantize, SeparationRepairKeepsMergedSeedsApart) {
   EXPECT_EQ(collapsed.quantization.arc_length[1], 0);
 }
 
+// Density calibration on traced random meshes coarsened 2× (targets halved, where separation
+// rounds short arcs up): the result is the optimal quantization of the T-mesh at the reported
+// factor (within the limits, the targets scaled by it), its quads are what the collapse makes,
+// and it is never further from the wanted count than the uncalibrated result. (That it reaches
+// the count on a real mesh: Requantize.CalibrationHitsTheQuadCount; these small meshes have
+// too few patches for fine steps.)
+TEST(TMeshQuantize, DensityCalibrationIsTheOptimumAtItsFactor) {
+  int moved = 0;
+  for (uint64_t seed = 0; seed < uint64_t(testing::scaled(80)); ++seed) {
+    TraceOptions trace;
+    trace.density = 0.5;
+    const TracedTMesh traced = trace_tmesh(test::random_quad_mesh(seed), trace, "random");
+    RequantizeOptions o;
+    const RequantizeResult plain = requantize_tmesh(traced, nullptr, o, "random");
+    o.target_quads = std::llround(target_quads(traced.tmesh));
+    const RequantizeResult fitted = requantize_tmesh(traced, nullptr, o, "random");
+    ASSERT_FALSE(fitted.quantization.arc_length.empty()) << "seed " << seed;
+    const TMesh& t = fitted.traced.tmesh;
+    for (int a = 0; a < t.num_arcs(); ++a)
+      ASSERT_NEAR(t.arc_target[a], traced.tmesh.arc_target[a] * fitted.density_factor, 1e-9);
+    ASSERT_GE(fitted.density_factor, 0.5 - 1e-12);
+    ASSERT_LE(fitted.density_factor, 2 + 1e-12);
+    ASSERT_LE(fitted.calibration_solves, o.calibration_solves);
+    QuantizeOptions direct_options;
+    direct_options.extra_constraints = fitted.repair_constraints;
+    const TMeshQuantization direct = quantize_tmesh(t, validate_tmesh(t), direct_options);
+    ASSERT_TRUE(testing::relatively_close(direct.objective, fitted.quantization.objective))
+        << "seed " << seed;
+    const double wanted = static_cast<double>(o.target_quads);
+    const double quads = quantized_quads(t, fitted.quantization.arc_length);
+    ASSERT_EQ(fitted.collapsed.mesh.num_quads(), quads) << "seed " << seed;
+    const double plain_quads = quantized_quads(traced.tmesh, plain.quantization.arc_length);
+    ASSERT_LE(std::abs(quads - wanted), std::abs(plain_quads - wanted) + 1e-9) << "seed " << seed;
+    moved += fitted.density_factor != 1;
+  }
+  EXPECT_GE(moved, 2);
+}
+
 TEST(TMeshQuantize, CheckNamesTheViolation) {
   std::mt19937 rng(1);
   GridTMesh g = random_grid_tmesh(rng, 1, 1, 0);

@@ -116,6 +116,15 @@ std::string check_relaxed_quantization(const TMesh& tmesh, const std::vector<int
 // relaxed quantization).
 bool is_irregular_patch(const TMesh& tmesh, int patch, const std::vector<int64_t>& arc_length);
 
+// The number of quads a quantization tessellates into: Σ width × height over the patches (0
+// for a collapsed one). An irregular patch (relaxed) counts the product of its two side pairs'
+// mean lengths, about what its pattern has.
+double quantized_quads(const TMesh& tmesh, const std::vector<int64_t>& arc_length);
+
+// The same for the arc targets: the quad count the targets ask for (for a T-mesh traced on a
+// quad mesh, its quads times the density squared).
+double target_quads(const TMesh& tmesh);
+
 struct QuantizeOptions {
   DeviationCost cost = DeviationCost::Quadratic;
   double side_weight = 1;  // ArcModelOptions::side_weight

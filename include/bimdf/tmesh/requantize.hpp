@@ -17,6 +17,19 @@ struct RequantizeOptions {
   TraceOptions trace;  // density, features
   QuantizeOptions quantize;
   quant::SmoothingOptions smoothing;
+  // Density calibration (> 0; not with quantize.coarse): the quad count to aim at. Separation
+  // keeps every non-zero path ≥ 1, so where singularities or traces lie closer than one output
+  // edge apart, short arcs round up and a coarsening makes more quads than the density asks
+  // for (up to 3× on meshes with a singularity every few quads). Calibration scales every arc
+  // target by one factor, searched (secant steps on log quads against log factor, at most
+  // `calibration_solves` quantizations) until the quads are within `calibration_tolerance` of
+  // this count, the closest result kept. The factor stays within [1/max_density_change,
+  // max_density_change]: where the constraints alone force more quads than asked, the open
+  // regions are not coarsened beyond that to make up for it.
+  int64_t target_quads = 0;
+  double calibration_tolerance = 0.02;
+  int calibration_solves = 8;
+  double max_density_change = 2;
 };
 
 struct RequantizeResult {
@@ -27,6 +40,10 @@ struct RequantizeResult {
   // Separation repair: solves beyond the first, and the min-one bounds they added.
   int repair_rounds = 0;
   MinOneConstraints repair_constraints;
+  // Density calibration: the factor the T-mesh's arc targets were multiplied by (1 without
+  // calibration; traced.tmesh holds the scaled targets), and the quantizations it took.
+  double density_factor = 1;
+  int calibration_solves = 0;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
 
