@@ -79,7 +79,8 @@ TEST(TMeshQuantize, OptimumEqualsTheMilpOracle) {
     ASSERT_LE(exact_paths, q.objective + 1e-9) << "trial " << trial;
     collapsed += q.zero_arcs > 0;
   }
-  EXPECT_GT(collapsed, 30);  // targets down to 0.2: many T-meshes do collapse arcs
+  // Targets down to 0.2: many T-meshes do collapse arcs (47 of the 200).
+  EXPECT_GT(collapsed, testing::scaled(200) / 7);
 }
 
 TEST(TMeshQuantize, CoarseLayoutCollapsesWhatThePathsAllow) {
