@@ -79,7 +79,8 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
   // Relaxed: every arc ≥ 1 — zero arcs next to irregular patches may degenerate (§4.2.4).
   std::vector<int64_t> arc_lower(tmesh.num_arcs(), options.relaxed ? 1 : 0);
   std::vector<int64_t> arc_upper(tmesh.num_arcs(), kInfinity);
-  for (int a : constraints.arcs) arc_lower[a] = 1;
+  for (int a : constraints.arcs) arc_lower[a] = std::max<int64_t>(arc_lower[a], 1);
+  for (int a : constraints.arcs_two) arc_lower[a] = 2;
   if (!options.arc_pattern.empty())
     for (int a = 0; a < tmesh.num_arcs(); ++a) {
       if (options.arc_pattern[a] == 0) arc_lower[a] = arc_upper[a] = 0;

@@ -65,6 +65,7 @@ TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incid
                                  extra.arcs.end());
   result.constraints.sides.insert(result.constraints.sides.end(), extra.sides.begin(),
                                   extra.sides.end());
+  result.constraints.arcs_two = extra.arcs_two;
   ArcModelOptions model_options;
   model_options.cost = options.cost;
   model_options.coarse = options.coarse;

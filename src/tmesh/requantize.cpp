@@ -6,81 +6,11 @@
 #include <utility>
 
 #include "core/stopwatch.hpp"
+#include "tmesh/separation_repair.hpp"
 #include "tmesh/smooth_requantized.hpp"
 
 namespace bimdf::tmesh {
 namespace {
-
-// Separation repair (requantize.hpp): for every output vertex that merged two seeds, a
-// breadth-first search from one to the other over what merged points — zero arcs (joining
-// their ends) and zero-width patches (joining every T-mesh vertex of their two long sides,
-// through a node of their own) — and a min-one bound on the element of that path with the
-// longest target, added to `bounds`. Returns whether any was added.
-bool add_separation_bounds(const TMesh& tm, const std::vector<int64_t>& length,
-                           const CollapsedMesh& collapsed, MinOneConstraints& bounds) {
-  // Seeds: where non-zero paths start.
-  std::vector<char> seed(tm.num_vertices(), 0);
-  for (const auto& path : tm.nonzero_paths) seed[tm.half_arc_tail(path.front())] = 1;
-  // Nodes: T-mesh vertices, then one per patch and side pair. Edges carry their element:
-  // arc a ≥ 0, or −1 − (2·patch + pair).
-  const int nv = tm.num_vertices();
-  std::vector<std::vector<std::pair<int, int>>> adjacent(nv + 2 * tm.num_patches());
-  for (int a = 0; a < tm.num_arcs(); ++a)
-    if (length[a] == 0) {
-      const auto [u, w] = tm.arc_ends[a];
-      adjacent[u].push_back({w, a});
-      adjacent[w].push_back({u, a});
-    }
-  for (int p = 0; p < tm.num_patches(); ++p)
-    for (int pair = 0; pair < 2; ++pair) {
-      if (side_length(tm, p, pair, length) != 0) continue;
-      const int node = nv + 2 * p + pair;
-      for (int k : {pair + 1, (pair + 3) % 4})
-        for (int h : tm.patch_sides[p][k])
-          for (int v : {tm.half_arc_tail(h), tm.half_arc_head(h)}) {
-            adjacent[v].push_back({node, -1 - (2 * p + pair)});
-            adjacent[node].push_back({v, -1 - (2 * p + pair)});
-          }
-    }
-  const auto target = [&](int element) {
-    if (element >= 0) return tm.arc_target[element];
-    const int p = (-1 - element) / 2, pair = (-1 - element) % 2;
-    double sum = 0;
-    for (int k : {pair, pair + 2})
-      for (int h : tm.patch_sides[p][k]) sum += tm.arc_target[TMesh::arc_of(h)];
-    return sum / 2;
-  };
-  bool added = false;
-  std::vector<std::pair<int, int>> came_from(adjacent.size());  // (node, element)
-  for (const CollapsedVertex& o : collapsed.origin) {
-    std::vector<int> merged;
-    for (int v : o.tmesh_vertices)
-      if (seed[v]) merged.push_back(v);
-    if (merged.size() < 2) continue;
-    std::fill(came_from.begin(), came_from.end(), std::pair<int, int>{-1, 0});
-    std::vector<int> queue{merged[0]};
-    came_from[merged[0]] = {merged[0], 0};
-    for (size_t i = 0; i < queue.size() && came_from[merged[1]].first < 0; ++i)
-      for (const auto& [w, element] : adjacent[queue[i]])
-        if (came_from[w].first < 0) came_from[w] = {queue[i], element}, queue.push_back(w);
-    if (came_from[merged[1]].first < 0) continue;  // merged some other way: not ours to fix
-    int best = 0;
-    double best_target = -1;
-    for (int v = merged[1]; v != merged[0]; v = came_from[v].first)
-      if (const int e = came_from[v].second; target(e) > best_target)
-        best = e, best_target = target(e);
-    if (best >= 0) {
-      if (std::find(bounds.arcs.begin(), bounds.arcs.end(), best) != bounds.arcs.end()) continue;
-      bounds.arcs.push_back(best);
-    } else {
-      const SideRef side{(-1 - best) / 2, (-1 - best) % 2};
-      if (std::find(bounds.sides.begin(), bounds.sides.end(), side) != bounds.sides.end()) continue;
-      bounds.sides.push_back(side);
-    }
-    added = true;
-  }
-  return added;
-}
 
 // Density calibration (requantize.hpp): quantizations of `tm` with every arc target scaled by
 // one factor, until the quad count is within the tolerance of options.target_quads. Secant
@@ -151,12 +81,22 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                         : quantize_tmesh(tm, r.incidence, quantize);
     r.time_quantize_s += t.lap();
     if (r.quantization.arc_length.empty()) return r;
+    // A border loop shorter than 3 is found on the lengths alone (and its collapse would be
+    // refused): solve again before collapsing.
+    if (add_border_loop_bounds(tm, r.incidence, r.quantization.arc_length,
+                               quantize.extra_constraints)) {
+      ++r.repair_rounds;
+      continue;
+    }
     r.collapsed = collapse_and_tessellate(tm, r.incidence, r.quantization.arc_length,
                                           on_mesh ? mesh : nullptr, options.quantize.relaxed);
     r.time_collapse_s += t.lap();
-    if (!add_separation_bounds(tm, r.quantization.arc_length, r.collapsed,
-                               quantize.extra_constraints))
-      break;
+    // Both checks run, so that one round bounds every fault found.
+    const bool merged = add_separation_bounds(tm, r.quantization.arc_length, r.collapsed,
+                                              quantize.extra_constraints);
+    const bool folded =
+        add_valence_bounds(tm, r.quantization.arc_length, r.collapsed, quantize.extra_constraints);
+    if (!merged && !folded) break;
     ++r.repair_rounds;
   }
   r.repair_constraints = quantize.extra_constraints;

@@ -12,6 +12,7 @@
 #include "bimdf/tmesh/quantize.hpp"
 #include "bimdf/tmesh/requantize.hpp"
 #include "test_helpers.hpp"
+#include "tmesh/separation_repair.hpp"
 #include "tmesh_fixtures.hpp"
 #include "tmesh_grid_support.hpp"
 
@@ -227,6 +228,35 @@ TEST(TMeshQuantize, DensityCalibrationIsTheOptimumAtItsFactor) {
     moved += fitted.density_factor != 1;
   }
   EXPECT_GE(moved, 2);
+}
+
+// An annulus of two patches whose border loops have two arcs each, all of target 1: the
+// optimum makes both loops 2 edges long, holes that close up in a quad mesh. The repair bounds
+// one arc of each loop by 2 and the next solve keeps both loops ≥ 3.
+TEST(TMeshQuantize, BorderLoopRepairKeepsTwoArcHolesOpen) {
+  TracedTMesh traced;
+  TMesh& t = traced.tmesh;
+  // Outer O1 = 0, O2 = 1, inner I1 = 2, I2 = 3. Arcs: o1 0→1, o2 1→0, i1 2→3, i2 3→2,
+  // r1 1→3, r2 0→2.
+  t.vertices = {{{2, 0, 0}}, {{-2, 0, 0}}, {{1, 0, 0}}, {{-1, 0, 0}}};
+  t.arc_ends = {{0, 1}, {1, 0}, {2, 3}, {3, 2}, {1, 3}, {0, 2}};
+  t.arc_target = {1, 1, 1, 1, 2, 2};
+  // A: o1 (0→1), r1 (1→3), i1 reversed (3→2), r2 reversed (2→0); B: o2 (1→0), r2 (0→2),
+  // i2 reversed (2→3), r1 reversed (3→1).
+  t.patch_sides = {{{{0}, {8}, {5}, {11}}}, {{{2}, {10}, {7}, {9}}}};
+  const TMeshIncidence inc = validate_tmesh(t);
+  const TMeshQuantization plain = quantize_tmesh(t, inc, {});
+  ASSERT_EQ(plain.arc_length, (std::vector<int64_t>{1, 1, 1, 1, 2, 2}));
+  MinOneConstraints bounds;
+  ASSERT_TRUE(add_border_loop_bounds(t, inc, plain.arc_length, bounds));
+  EXPECT_EQ(bounds.arcs_two, (std::vector<int>{0, 2}));  // one per loop, ties to the first
+  EXPECT_FALSE(add_border_loop_bounds(t, inc, plain.arc_length, bounds));  // nothing new
+  const RequantizeResult r = requantize_tmesh(traced, nullptr, {}, "annulus");
+  EXPECT_EQ(r.repair_rounds, 1);
+  const std::vector<int64_t>& x = r.quantization.arc_length;
+  EXPECT_GE(x[0] + x[1], 3);
+  EXPECT_GE(x[2] + x[3], 3);
+  EXPECT_EQ(check_quantization(t, x), "");
 }
 
 TEST(TMeshQuantize, CheckNamesTheViolation) {

@@ -52,7 +52,7 @@ struct TracedTMesh {
   std::vector<int> feature_corners;               // mesh vertices
   std::vector<int> seeds;                         // mesh vertices that emitted traces
   int traces = 0;                                 // traces started
-  int crossings = 0;  // trace crossings (angle-bounded graph only)
+  int crossings = 0;                              // trace crossings (angle-bounded graph only)
   int extended_trace_edges = 0;                   // mesh edges on extended traces (diagnostics)
 
   // Trace i, as the mesh vertices it runs through (its seed first), in the motorcycle graph

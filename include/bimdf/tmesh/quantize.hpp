@@ -60,7 +60,10 @@ using SideRef = std::array<int, 2>;
 struct MinOneConstraints {
   std::vector<int> arcs;
   std::vector<SideRef> sides;
-  int size() const { return static_cast<int>(arcs.size() + sides.size()); }
+  // Arcs whose length must be ≥ 2: the longer arc of a border loop of two arcs, which would
+  // otherwise close into a two-edge hole (separation repair, requantize.hpp).
+  std::vector<int> arcs_two;
+  int size() const { return static_cast<int>(arcs.size() + sides.size() + arcs_two.size()); }
 };
 
 // Algorithm 2 on the T-mesh's nonzero_paths (`incidence` from validate_tmesh). Side target

@@ -58,11 +58,15 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 // Separation repair: the non-zero paths are sufficient in theory but, as constructed, not
 // always in practice (angle-bounded paths at large angles). When the collapse merges two
 // T-mesh vertices that start non-zero paths (seeds: singularities, corners), the zero arcs and
-// zero-width patches that joined them are found, the one with the longest target gets a
-// min-one bound, and the T-mesh is quantized again — the lazy constraints the paper (§4.2.3)
-// mentions as unexplored. Each round bounds an element that was 0, so this ends; all
-// elements bounded means nothing collapses. `options.trace` is not used. Throws CollapseError if
-// the quantized T-mesh does not collapse into a conforming mesh (see collapse.hpp).
+// zero-width patches that joined them are found and the one with the longest target gets a
+// min-one bound; when a seed keeps its place but not its valence (traces leaving it folded
+// together where a patch cornered there collapsed), every zero element at it gets one; a
+// border loop shorter than 3 edges (a hole with fewer than three seeds closing into two edges)
+// gets bounds that make it ≥ 3 (src/tmesh/separation_repair.hpp). Then the T-mesh is quantized
+// again — the lazy constraints the paper (§4.2.3) mentions as unexplored. Each round bounds an
+// element that was 0, so this ends; all elements bounded means nothing collapses. `options.trace`
+// is not used. Throws CollapseError if the quantized T-mesh does not collapse into a conforming
+// mesh (see collapse.hpp).
 RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                   const RequantizeOptions& options, const std::string& source);
 
