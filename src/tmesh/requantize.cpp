@@ -15,24 +15,28 @@ namespace {
 // Density calibration (requantize.hpp): quantizations of `tm` with every arc target scaled by
 // one factor, until the quad count is within the tolerance of options.target_quads. Secant
 // steps on log quads against log factor: quads grow about as the factor squared, less where
-// separation holds short arcs at 1 — the measured slope says how much less. Leaves tm's targets
-// scaled by the factor of the quantization returned (the closest one).
-TMeshQuantization calibrate_density(TMesh& tm, const TMeshIncidence& incidence,
+// separation holds short arcs at 1 — the measured slope says how much less. `base`: the targets
+// as given; the search starts at r.density_factor (the previous round's, after a repair added
+// bounds) and runs at most options.calibration_solves quantizations. Leaves tm's targets scaled
+// by the factor of the quantization returned (the closest one).
+TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
+                                    const TMeshIncidence& incidence,
+                                    const QuantizeOptions& quantize,
                                     const RequantizeOptions& options, RequantizeResult& r) {
-  const std::vector<double> base = tm.arc_target;
   const double wanted = static_cast<double>(options.target_quads);
+  int solves = 0;
   const auto quantize_at = [&](double factor) {
     for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * factor;
-    ++r.calibration_solves;
-    return quantize_tmesh(tm, incidence, options.quantize);
+    ++r.calibration_solves, ++solves;
+    return quantize_tmesh(tm, incidence, quantize);
   };
-  double factor = 1;
+  double factor = r.density_factor;
   TMeshQuantization best = quantize_at(factor);
   if (best.arc_length.empty()) return best;
   double quads = quantized_quads(tm, best.arc_length), best_quads = quads, best_factor = factor;
   double last_factor = 0, last_quads = 0;
   const double limit = std::max(1.0, options.max_density_change);
-  while (r.calibration_solves < options.calibration_solves && quads > 0 &&
+  while (solves < options.calibration_solves && quads > 0 &&
          std::abs(quads / wanted - 1) > options.calibration_tolerance) {
     double slope = 2;
     if (last_factor > 0 && last_quads > 0 && last_quads != quads) {
@@ -75,10 +79,12 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   r.incidence = validate_tmesh(tm, source);
   const bool on_mesh = mesh && !tm.patch_grid.empty();
   QuantizeOptions quantize = options.quantize;
+  // Calibrated again after every repair: the bounds a repair adds raise the quad count.
   const bool calibrate = options.target_quads > 0 && !quantize.coarse;
-  for (bool first = true;; first = false) {
-    r.quantization = first && calibrate ? calibrate_density(tm, r.incidence, options, r)
-                                        : quantize_tmesh(tm, r.incidence, quantize);
+  const std::vector<double> base = tm.arc_target;
+  for (;;) {
+    r.quantization = calibrate ? calibrate_density(tm, base, r.incidence, quantize, options, r)
+                               : quantize_tmesh(tm, r.incidence, quantize);
     r.time_quantize_s += t.lap();
     if (r.quantization.arc_length.empty()) return r;
     // A border loop shorter than 3 is found on the lengths alone (and its collapse would be

@@ -41,7 +41,8 @@ struct RequantizeResult {
   int repair_rounds = 0;
   MinOneConstraints repair_constraints;
   // Density calibration: the factor the T-mesh's arc targets were multiplied by (1 without
-  // calibration; traced.tmesh holds the scaled targets), and the quantizations it took.
+  // calibration; traced.tmesh holds the scaled targets), and the quantizations it took (at
+  // most calibration_solves per round: calibration runs again after each repair round).
   double density_factor = 1;
   int calibration_solves = 0;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
