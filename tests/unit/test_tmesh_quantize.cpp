@@ -230,6 +230,29 @@ TEST(TMeshQuantize, DensityCalibrationIsTheOptimumAtItsFactor) {
   EXPECT_GE(moved, 2);
 }
 
+TEST(TMeshQuantize, ValenceRepairKeepsASeedsTracesApart) {
+  // A 2 × 2 grid whose left column is thin (0.3), the centre a seed with one path, to the
+  // right: the path holds with the left column collapsed, but the centre then lies on the
+  // border with 2 quads instead of 4. Only the valence repair notices (no other seed merges).
+  TracedTMesh traced;
+  for (uint32_t seed = 1;; ++seed) {  // a grid without merged cells: 6 + 6 arcs
+    std::mt19937 rng(seed);
+    traced.tmesh = random_grid_tmesh(rng, 2, 2, 0).tmesh;
+    if (traced.tmesh.num_arcs() == 12) break;
+  }
+  TMesh& t = traced.tmesh;
+  // Horizontal arcs: row j, column i = 2j + i; vertical: 6 + 2i + j; centre vertex 4.
+  for (int a = 0; a < 12; ++a) t.arc_target[a] = a < 6 && a % 2 == 0 ? 0.3 : 3;
+  t.nonzero_paths = {{2 * 3}};  // (1, 1) → (2, 1)
+  const RequantizeResult r = requantize_tmesh(traced, nullptr, {}, "grid");
+  EXPECT_EQ(r.repair_rounds, 1);
+  EXPECT_GE(r.quantization.arc_length[2], 1);  // the arc (0, 1) → (1, 1)
+  EXPECT_EQ(r.quantization.zero_arcs, 0);
+  // The repair's bounds: the centre's zero arc and the collapsed patches' widths.
+  EXPECT_EQ(r.repair_constraints.arcs, (std::vector<int>{2}));
+  EXPECT_EQ(r.repair_constraints.sides.size(), 2);
+}
+
 // An annulus of two patches whose border loops have two arcs each, all of target 1: the
 // optimum makes both loops 2 edges long, holes that close up in a quad mesh. The repair bounds
 // one arc of each loop by 2 and the next solve keeps both loops ≥ 3.
