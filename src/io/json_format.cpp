@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "bimdf/io.hpp"
+#include "json_document.hpp"
 #include "report_issue.hpp"
 #include "text_scan.hpp"
 
@@ -48,22 +49,7 @@ class JsonProblemReader {
   }
 
   static json parse_document(std::string_view text, const std::string& source) {
-    try {
-      return json::parse(text.begin(), text.end());
-    } catch (const json::out_of_range& e) {
-      // Numbers beyond double's range; nlohmann gives no position for these.
-      std::string what = e.what();
-      if (const size_t k = what.find("] "); k != std::string::npos) what = what.substr(k + 2);
-      throw InputError(source, "", "invalid JSON: " + what);
-    } catch (const json::parse_error& e) {
-      // nlohmann reports a byte offset; users want a line.
-      const size_t at = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-      int line = 1;
-      for (size_t i = 0; i < at; ++i) line += text[i] == '\n';
-      std::string what = e.what();
-      if (const size_t k = what.find("syntax error"); k != std::string::npos) what = what.substr(k);
-      throw InputError(source, std::to_string(line), "invalid JSON: " + what);
-    }
+    return detail::parse_json_document(text, source);
   }
 
  private:

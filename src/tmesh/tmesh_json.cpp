@@ -18,6 +18,7 @@
 #include "bimdf/error.hpp"
 #include "bimdf/io.hpp"
 #include "bimdf/tmesh/tmesh.hpp"
+#include "io/json_document.hpp"
 
 namespace bimdf::tmesh {
 namespace {
@@ -59,22 +60,7 @@ class TMeshJsonReader {
   }
 
   json parse_document(const std::string& text) const {
-    try {
-      return json::parse(text);
-    } catch (const json::out_of_range& e) {
-      // Numbers beyond double's range; nlohmann gives no position for these.
-      std::string what = e.what();
-      if (const size_t k = what.find("] "); k != std::string::npos) what = what.substr(k + 2);
-      throw InputError(source_, "", "invalid JSON: " + what);
-    } catch (const json::parse_error& e) {
-      // nlohmann reports a byte offset; users want a line.
-      const size_t at = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-      int line = 1;
-      for (size_t i = 0; i < at; ++i) line += text[i] == '\n';
-      std::string what = e.what();
-      if (const size_t k = what.find("syntax error"); k != std::string::npos) what = what.substr(k);
-      throw InputError(source_, std::to_string(line), "invalid JSON: " + what);
-    }
+    return detail::parse_json_document(text, source_);
   }
 
   void check_keys(const json& obj, const std::string& path,
