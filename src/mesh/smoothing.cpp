@@ -311,6 +311,18 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     }
     return worst;
   };
+  // Quads at v turned over (against either normal). Where there is none, no move may make
+  // one: the quality alone does not ensure that when a quad at v already rates below an
+  // inverted one — a sliver, penalized above, would let a move turn a good neighbour over to
+  // widen it. Where quads are turned already, the quality and the untangling decide (trading
+  // one badly turned quad for two slightly turned ones can be the way out).
+  const auto turned_at = [&](int v) {
+    int count = 0;
+    for (int f : vertex_quads[v])
+      count += detail::scaled_jacobian(mesh, mesh.quads[f]) < 0 ||
+               detail::scaled_jacobian(mesh, mesh.quads[f], up[f]) < 0;
+    return count;
+  };
   // p back on the surface: on v's curve, or on its charts' triangles.
   const auto project = [&](int v, const std::array<double, 3>& p) {
     detail::TriangleTree::Hit best;
@@ -368,18 +380,18 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     // quads at v are bad, longer and shorter steps are tried too, and then a local search
     // in the tangent plane for the position that makes the worst quad best.
     const double before = quality(v);
+    const int turned = turned_at(v);
     std::array<double, 3> chosen = old;
     double chosen_quality = -2;
-    if (before < kBad)
-      for (const detail::Vec3& p : search_positions(v)) {
-        mesh.vertices[v] = project(v, p);
-        const double q = quality(v);
-        if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
-      }
-    for (double damping : {options.damping, 1.0, 0.25}) {
-      mesh.vertices[v] = candidate(damping);
+    const auto consider = [&](const std::array<double, 3>& p) {
+      mesh.vertices[v] = p;
       const double q = quality(v);
-      if (q > chosen_quality) chosen_quality = q, chosen = mesh.vertices[v];
+      if (q > chosen_quality && (turned > 0 || turned_at(v) == 0)) chosen_quality = q, chosen = p;
+    };
+    if (before < kBad)
+      for (const detail::Vec3& p : search_positions(v)) consider(project(v, p));
+    for (double damping : {options.damping, 1.0, 0.25}) {
+      consider(candidate(damping));
       if (before >= kGoodEnough) break;
     }
     mesh.vertices[v] = chosen_quality >= std::min(before, kGoodEnough) ? chosen : old;
@@ -426,11 +438,15 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       const detail::Vec3 old = mesh.vertices[v];
       detail::Vec3 chosen = old;
       double lowest = energy(v);
-      const int tangled = inverted_at(v);
-      // The energy at p, +∞ where v would tangle more quads or make corners coincide.
+      const int tangled = inverted_at(v), turned = turned_at(v);
+      // The energy at p, +∞ where v would tangle more quads, make corners coincide or turn a
+      // quad over where none was (trading a sliver for a turned quad keeps the count of
+      // tangled ones).
       const auto allowed_energy = [&](const detail::Vec3& p) {
         mesh.vertices[v] = project(v, p);
-        return inverted_at(v) <= tangled ? energy(v) : std::numeric_limits<double>::infinity();
+        return inverted_at(v) <= tangled && (turned > 0 || turned_at(v) == 0)
+                   ? energy(v)
+                   : std::numeric_limits<double>::infinity();
       };
       for (const detail::Vec3& p : search_positions(v)) {
         const double e = allowed_energy(p);

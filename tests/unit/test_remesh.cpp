@@ -257,6 +257,46 @@ TEST(Remesh, SmoothingUntanglesAFoldedChart) {
   EXPECT_LT(m.hausdorff_relative, 0.02);
 }
 
+// Smoothing never turns a quad over, even beside slivers: a flat grid of quads 250 times as
+// long as wide (corners closer than 1% of the longest edge, which the smoother rates below an
+// inverted quad) with its interior vertices jittered. A move that widened the slivers by
+// turning a neighbour over would raise that rating; it must still be refused (coarse
+// requantizations on long thin parts made hundreds of such quads before it was).
+TEST(Remesh, SmoothingNeverTurnsOverAQuadBesideASliver) {
+  constexpr int kColumns = 4, kRows = 40;
+  constexpr double kHeight = 0.004;  // of a row; columns are 1 wide
+  Layout layout;
+  layout.mesh.vertices = {
+      {0, 0, 0}, {kColumns, 0, 0}, {kColumns, kRows * kHeight, 0}, {0, kRows * kHeight, 0}};
+  layout.mesh.faces = {{0, 1, 2}, {0, 2, 3}};
+  layout.face_chart = {0, 0};
+  layout.charts.resize(1);
+  layout.charts[0].faces = {0, 1};
+  Tessellation t;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const auto id = [](int i, int j) { return j * (kColumns + 1) + i; };
+  for (int j = 0; j <= kRows; ++j)
+    for (int i = 0; i <= kColumns; ++i) {
+      const bool inside = i > 0 && i < kColumns && j > 0 && j < kRows;
+      t.mesh.vertices.push_back({i + (inside ? 0.3 * unit(random) : 0),
+                                 j * kHeight + (inside ? 0.35 * kHeight * unit(random) : 0), 0});
+      VertexOrigin origin;
+      if (inside) origin.chart = 0;  // the border stays: no chart, no curve
+      t.origin.push_back(origin);
+    }
+  for (int j = 0; j < kRows; ++j)
+    for (int i = 0; i < kColumns; ++i) {
+      t.mesh.quads.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      t.mesh.quad_patch.push_back(0);
+    }
+  ASSERT_EQ(measure_quad_mesh(t.mesh).inverted, 0);
+  smooth_on_surface(layout, t, SmoothingOptions{});
+  const QuadMeshMetrics m = measure_quad_mesh(t.mesh);
+  EXPECT_EQ(m.inverted, 0);
+  EXPECT_EQ(m.degenerate, 0);
+}
+
 TEST(Remesh, LengthsThatAdmitNoPatternAreRejected) {
   const Layout layout =
       read_quadwild_layout(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj");
