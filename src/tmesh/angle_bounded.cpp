@@ -29,18 +29,25 @@ bool is_curve(const QuadMeshTopology& topo, const std::vector<uint8_t>& feature_
   return topo.is_border_edge(e) || feature_edge[e];
 }
 
-// Where traces end: the border, feature curves and seeds. Traces pass only through the other
-// vertices, which are interior and regular (their rings have 4 edges); only there do they cross.
-std::vector<uint8_t> stop_vertices(const QuadMeshTopology& topo,
-                                   const std::vector<uint8_t>& feature_edge,
-                                   const std::vector<int>& seeds) {
-  std::vector<uint8_t> stop(topo.num_vertices(), 0);
+// Vertices on a curve: border vertices, and those with a feature edge.
+std::vector<uint8_t> curve_vertices(const QuadMeshTopology& topo,
+                                    const std::vector<uint8_t>& feature_edge) {
+  std::vector<uint8_t> on(topo.num_vertices(), 0);
   for (int e = 0; e < topo.num_edges(); ++e)
     if (is_curve(topo, feature_edge, e)) {
       const auto [a, b] = topo.edge_vertices(e);
-      stop[a] = stop[b] = 1;
+      on[a] = on[b] = 1;
     }
-  for (int v = 0; v < topo.num_vertices(); ++v) stop[v] |= topo.is_border_vertex(v);
+  return on;
+}
+
+// Where traces end: the border and seeds. Traces pass only through the other vertices, which
+// are interior and regular (their rings have 4 edges) — across a feature curve too, straight
+// on (ours: a separatrix that crosses a feature stays in the T-mesh on both sides, so a
+// coarsening cannot bend it there onto another singularity) — and cross each other there.
+std::vector<uint8_t> stop_vertices(const QuadMeshTopology& topo, const std::vector<int>& seeds) {
+  std::vector<uint8_t> stop(topo.num_vertices(), 0);
+  for (int v = 0; v < topo.num_vertices(); ++v) stop[v] = topo.is_border_vertex(v);
   for (int s : seeds) stop[s] = 1;
   return stop;
 }
@@ -55,8 +62,9 @@ std::vector<uint8_t> stop_vertices(const QuadMeshTopology& topo,
 class Lockstep {
  public:
   Lockstep(const QuadMeshTopology& topo, const std::vector<uint8_t>& stop,
-           const std::vector<Trace>& lines)
+           const std::vector<uint8_t>& on_curve, const std::vector<Trace>& lines)
       : lines_(lines),
+        on_curve_(on_curve),
         slot_trace_(4 * size_t(topo.num_vertices()), -1),
         slot_pos_(4 * size_t(topo.num_vertices()), -1) {
     // Per line position p ≥ 1: the slot of its vertex and of the edge it arrives along, −1 at
@@ -169,12 +177,14 @@ class Lockstep {
     }
   }
 
-  // Whether a trace line crosses m's vertex straight through, perpendicular to m, once this
-  // step's decisions are made (m itself is done; stop vertices never get here). A line along
-  // m's own (an opposite trace) does not count: m would end inside an arc, not at a T-mesh
-  // vertex where its non-zero path can end.
+  // Whether a trace line or a feature curve crosses m's vertex straight through,
+  // perpendicular to m, once this step's decisions are made (m itself is done; stop vertices
+  // never get here; a trace meets a feature curve only across it). A line along m's own (an
+  // opposite trace) does not count: m would end inside an arc, not at a T-mesh vertex where
+  // its non-zero path can end.
   bool line_through(const Moved& m, int step) const {
     const int base = m.slot & ~3;
+    if (on_curve_[base / 4]) return true;
     for (int turn : {1, 3}) {
       const int s = base + ((m.slot & 3) + turn) % 4;
       const int j = slot_trace_[s];
@@ -186,6 +196,7 @@ class Lockstep {
   }
 
   const std::vector<Trace>& lines_;
+  const std::vector<uint8_t>& on_curve_;
   std::vector<size_t> offset_;  // per line, into slot_of_
   std::vector<int> slot_of_;
   // Per interior regular vertex v and ring index k, slot 4v + k: the trace that arrived along
@@ -265,6 +276,25 @@ void add_curve_paths(const QuadMeshTopology& topo, const std::vector<uint8_t>& f
     }
 }
 
+// (4, ours): each piece of a trace from one curve it reaches to the next, so that a strip
+// between two feature curves (or a feature curve and the border) that a trace crosses keeps a
+// width ≥ 1 there: without it a coarsening could fold two sharp curves into one.
+void add_between_curve_paths(const std::vector<Trace>& traces, const std::vector<uint8_t>& on_curve,
+                             std::vector<std::vector<int>>& chains, std::vector<int>& chain_trace) {
+  for (size_t t = 0; t < traces.size(); ++t) {
+    const std::vector<int>& v = traces[t].vertices;
+    size_t last = v.size();  // none yet
+    for (size_t p = 0; p < v.size(); ++p) {
+      if (!on_curve[v[p]]) continue;
+      if (last < p) {
+        chains.emplace_back(v.begin() + last, v.begin() + p + 1);
+        chain_trace.push_back(-2 - static_cast<int>(t));
+      }
+      last = p;
+    }
+  }
+}
+
 // Drops every chain whose edge set equals (keeping the lexicographically smallest vertex
 // sequence) or strictly includes another's, then sorts. Each mesh edge lies on few chains (a
 // directed edge lies on one trace at most, a curve edge on two curve paths at most), so
@@ -289,8 +319,8 @@ void prune_and_sort(const QuadMeshTopology& topo, std::vector<std::vector<int>>&
         continue;
       if (edges[p].size() > edges[q].size())
         dropped[p] = 1;
-      else  // the same edge set
-        dropped[chains[p] < chains[q] ? q : p] = 1;
+      else  // the same edge set: keep the smaller sequence, of equal ones the first
+        dropped[chains[p] < chains[q] || (chains[p] == chains[q] && size_t(p) < q) ? q : p] = 1;
     }
   std::vector<size_t> order;
   for (size_t c = 0; c < n; ++c)
@@ -327,11 +357,12 @@ AngleBoundedGraph trace_angle_bounded(const QuadMeshTopology& topo,
   const bool angle_rule = max_angle_deg < 90;
   const double tan_max =
       angle_rule ? std::tan(max_angle_deg * std::numbers::pi / 180) * (1 + kRatioTolerance) : 0;
-  const std::vector<uint8_t> stop = stop_vertices(topo, feature_edge, seeds);
+  const std::vector<uint8_t> stop = stop_vertices(topo, seeds);
+  const std::vector<uint8_t> on_curve = curve_vertices(topo, feature_edge);
   AngleBoundedGraph g;
-  g.traces = trace_extended_motorcycle_graph(topo, feature_edge, seeds);
+  g.traces = trace_extended_motorcycle_graph(topo, feature_edge, seeds, /*cross_features=*/true);
   if (angle_rule) {
-    Lockstep lockstep(topo, stop, g.traces);
+    Lockstep lockstep(topo, stop, on_curve, g.traces);
     std::vector<int> keep(g.traces.size(), 0);
     for (double t = tan_max;;) {
       lockstep.run(t);
@@ -360,6 +391,7 @@ AngleBoundedGraph trace_angle_bounded(const QuadMeshTopology& topo,
     g.nonzero_trace.push_back(static_cast<int>(t));
   }
   add_curve_paths(topo, feature_edge, seeds, g.nonzero_chains, g.nonzero_trace);
+  add_between_curve_paths(g.traces, on_curve, g.nonzero_chains, g.nonzero_trace);
   prune_and_sort(topo, g.nonzero_chains, g.nonzero_trace);
   return g;
 }

@@ -10,9 +10,12 @@
 // and every non-zero chain is a straight chain of cut edges from a seed.
 //
 // Traces. From every seed along every edge that is neither border nor feature (the traces of
-// trace_extended_motorcycle_graph, in the same emission order), each going straight on through
-// collisions until it reaches the border, a feature curve or a seed, or would repeat a directed
-// edge — or until the angle rule stops it:
+// trace_extended_motorcycle_graph with cross_features, in the same emission order), each going
+// straight on through collisions and across feature curves (ours: a separatrix crossing a
+// feature then stays in the T-mesh on both sides, and a coarsening cannot bend it onto another
+// singularity there — which grew the base complex of a cylinder-like part from 6 to 10) until
+// it reaches the border or a seed, or would repeat a directed edge — or until the angle rule
+// stops it:
 //   * A crossing of traces t_i (from seed i) and t_j (seed j, j ≠ i as traces) is a regular
 //     interior vertex n that both traces have reached, arriving along perpendicular edges. With
 //     l_ij the edges along t_i from i to n and l_ji along t_j, the right triangle (i, n, j)
@@ -28,8 +31,9 @@
 //     done trace stops at its current vertex if a trace line crosses it there straight
 //     through and perpendicular to it — a trace that arrived along a perpendicular edge and
 //     has moved on (itself, around a loop, included), or one standing there that is not done
-//     (it will move on). Otherwise it runs on until it is at such a vertex (or at the border,
-//     a feature, a seed or the end of its line). So no trace ends inside a region, two done
+//     (it will move on) — or if it is on a feature curve (which it would cross). Otherwise it
+//     runs on until it is at such a vertex (or at the border, a seed or the end of its
+//     line). So no trace ends inside a region, two done
 //     traces never end on each other in an L, and every trace ends at a T-mesh vertex (not on
 //     a line along its own, where its non-zero path would end inside an arc). Every decision
 //     of a step depends only on the state after all of its moves, never on the traces' order.
@@ -51,7 +55,10 @@
 //   (2) when max_angle_deg < 90, for every crossing with l_ji > tan α · l_ij: t_j from j to
 //       n_ij (else seed j could slide onto t_i's line, turning it by more than α);
 //   (3, ours) from every seed along every border or feature edge, straight on along that curve
-//     to the next seed (without it a mesh whose curves leave no trace could collapse whole).
+//     to the next seed (without it a mesh whose curves leave no trace could collapse whole);
+//   (4, ours) every piece of a trace from one curve it reaches (border or feature) to the
+//     next, so that a coarsening cannot fold two sharp curves, or a curve and the border,
+//     into one where a trace runs between them.
 //   Two paths with the same edge set are one (the one whose vertex sequence is smaller is
 //   kept), and a path whose edges include all of another path's is dropped (it is implied).
 //   Since (1) and (2) are nested prefixes of one trace, each trace keeps at most one path.
@@ -78,7 +85,8 @@ struct AngleBoundedGraph {
   // Non-zero paths as mesh-vertex chains, each from a seed along cut edges straight on;
   // sorted lexicographically.
   std::vector<std::vector<int>> nonzero_chains;
-  // Per chain: the trace it is a prefix of, or −1 for a curve path (3).
+  // Per chain: the trace it is a prefix of, −1 for a curve path (3), or −2 − t for a piece of
+  // trace t between two curves (4).
   std::vector<int> nonzero_trace;
   int crossings = 0;      // crossings of two traces (an unordered pair at one vertex)
   int lockstep_runs = 0;  // thresholds tried (see above; 0 without the angle rule)

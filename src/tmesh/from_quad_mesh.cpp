@@ -292,7 +292,7 @@ TracedTMesh trace_tmesh(const QuadMesh& mesh, const TraceOptions& options,
 
   if (angle_bounded) {
     std::vector<int> chain_trace = bounded.nonzero_trace;
-    for (int& t : chain_trace) t = t < 0 ? -2 : t;  // its curve pieces
+    for (int& t : chain_trace) t = t == -1 ? -2 : t < -1 ? -3 : t;  // curve / between curves
     add_nonzero_paths(out, bounded.nonzero_chains, std::move(chain_trace));
   } else {
     add_nonzero_paths_per_trace(out, topo, feature);

@@ -158,11 +158,12 @@ MotorcycleGraph trace_motorcycle_graph(const QuadMeshTopology& topo,
 
 std::vector<Trace> trace_extended_motorcycle_graph(const QuadMeshTopology& topo,
                                                    const std::vector<uint8_t>& feature_edge,
-                                                   const std::vector<int>& seeds) {
+                                                   const std::vector<int>& seeds,
+                                                   bool cross_features) {
   const int V = topo.num_vertices();
   std::vector<uint8_t> stop(V, 0);
   for (int v = 0; v < V; ++v)
-    stop[v] = topo.is_border_vertex(v) || on_feature(topo, feature_edge, v);
+    stop[v] = topo.is_border_vertex(v) || (!cross_features && on_feature(topo, feature_edge, v));
   for (int s : seeds) stop[s] = 1;
   // Directed edge 2e (from edge_vertices(e)[0]) or 2e + 1, stamped with the last trace that
   // took it: one array for all traces, no clearing between them.
@@ -181,6 +182,7 @@ std::vector<Trace> trace_extended_motorcycle_graph(const QuadMeshTopology& topo,
       t.edges.push_back(e);
       if (stop[at]) break;
       e = topo.straight_on(at, e);
+      if (e < 0 || feature_edge[e]) break;  // not straight across a curve: ends on it
     }
     traces.push_back(std::move(t));
   });

@@ -62,10 +62,14 @@ MotorcycleGraph trace_motorcycle_graph(const QuadMeshTopology& topo,
 // The extended motorcycle graph (Lyon et al. 2021): the same traces, in the same order, each
 // going straight on regardless of the others until it reaches the border, a feature curve or
 // a seed, or until its next step would repeat a directed edge it has already taken (a grid
-// line closing on itself). Each trace is at most 2·edges long.
+// line closing on itself). With `cross_features`, traces go straight across feature curves
+// (a vertex on a curve that is not a seed is regular, and the curve passes through it
+// straight on, so the trace's way on is the other edge off the curve) and stop only at the
+// border and seeds. Each trace is at most 2·edges long.
 std::vector<Trace> trace_extended_motorcycle_graph(const QuadMeshTopology& topo,
                                                    const std::vector<uint8_t>& feature_edge,
-                                                   const std::vector<int>& seeds);
+                                                   const std::vector<int>& seeds,
+                                                   bool cross_features = false);
 
 // Extra cuts that leave every region of the graph a rectangle whose grid vertices are
 // distinct (from_quad_mesh.hpp, TracedTMesh::cylinder_cuts), added to `cut`:

@@ -5,7 +5,9 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
+#include <tuple>
 
 #include "bimdf/metrics.hpp"
 #include "cli_fixture.hpp"
@@ -92,10 +94,85 @@ TEST_F(Requantize, CoarseLayoutsKeepEverySingularity) {
       repaired[args] += j["repair_rounds"].get<int>() > 0;
       const QuadMeshMetrics m = measure_quad_mesh(output());
       EXPECT_TRUE(m.manifold()) << "seed " << seed << ", " << args;
+      // A coarsening aligns separatrices; it never bends one that joined two singularities
+      // onto another (traces cross feature curves, so the T-mesh holds it on both sides).
+      if (std::string(args).starts_with("--coarse"))
+        EXPECT_LE(m.base_complex_faces, j["base_complex_in"].get<int>())
+            << "seed " << seed << ", " << args;
     }
   for (const auto& [args, n] : repaired) std::cout << args << ": " << n << " repaired\n";
   // 5 of the 48 coarse runs: the paths alone would have merged singularities.
   EXPECT_GE(repaired["--coarse --max-angle 10"] + repaired["--coarse --max-angle 45"], 1);
+}
+
+// Feature curves that separatrices cross: the smooth subdivided cube (8 valence-3 corners,
+// base complex 6) with two grid loops round its sides marked as features, one row above the
+// bottom corners and one below the top ones. Each corner's vertical separatrix crosses both
+// loops to the corner above or below; the coarse layout keeps them joined (6 patches, the
+// same singularities, nothing inverted).
+TEST_F(Requantize, CoarseLayoutKeepsSeparatricesAcrossFeatures) {
+  const QuadMesh cube = test::subdivided_cube(3);  // 8 × 8 quads per face
+  std::map<int, std::set<int>> neighbours;
+  for (const auto& q : cube.quads)
+    for (int a = 0; a < 4; ++a) {
+      neighbours[q[a]].insert(q[(a + 1) % 4]);
+      neighbours[q[(a + 1) % 4]].insert(q[a]);
+    }
+  const auto share_quad = [&](int u, int w) {
+    for (const auto& q : cube.quads)
+      if (std::count(q.begin(), q.end(), u) && std::count(q.begin(), q.end(), w)) return true;
+    return false;
+  };
+  // Straight on at a regular vertex: the neighbour sharing no quad with where we came from.
+  const auto straight = [&](int from, int at) {
+    for (int w : neighbours[at])
+      if (w != from && !share_quad(from, w)) return w;
+    return -1;
+  };
+  const auto loop_edges = [&](int corner, int offset) {
+    // `offset` edges from the corner up its vertical separatrix (any edge at corner 0 will
+    // do: the cube is symmetric), then round the cube along the grid line there.
+    int from = corner, at = *neighbours[corner].begin();
+    for (int k = 1; k < offset; ++k) std::tie(from, at) = std::pair{at, straight(from, at)};
+    const int start = at;
+    int previous = -1;
+    for (int w : neighbours[start])
+      if (w != from && w != straight(from, start)) previous = w;  // turn onto the loop
+    std::vector<std::array<int, 2>> edges;
+    for (int u = previous, v = start;;) {
+      edges.push_back({u, v});
+      if (v == previous) break;
+      std::tie(u, v) = std::pair{v, straight(u, v)};
+    }
+    return edges;
+  };
+  std::vector<std::array<int, 2>> features = loop_edges(0, 1);
+  const int loop_length = static_cast<int>(features.size());
+  ASSERT_EQ(loop_length, 32);
+  for (const auto& e : loop_edges(0, 7)) features.push_back(e);
+  std::ostringstream file;
+  file << features.size() << "\n";
+  for (const auto& [u, v] : features)
+    for (int f = 0; f < cube.num_quads(); ++f)
+      for (int k = 0; k < 4; ++k) {
+        const int a = cube.quads[f][k], b = cube.quads[f][(k + 1) % 4];
+        if ((a == u && b == v) || (a == v && b == u)) {
+          file << f << "," << k << "\n";
+          f = cube.num_quads(), k = 4;
+        }
+      }
+  const std::string feature = write("cube.feature", file.str());
+  for (const char* angle : {"10", "45"}) {
+    const json j = requantize(cube, std::string("--coarse --max-angle ") + angle +
+                                        " --sharp-angle 180 --feature " + feature);
+    ASSERT_EQ(j.value("status", ""), "optimal") << angle;
+    EXPECT_EQ(j["base_complex_in"], 6);
+    EXPECT_EQ(j["base_complex_out"], 6) << angle;
+    EXPECT_EQ(j["singularities_out"]["inside"], json({{"3", 8}})) << angle;
+    const QuadMeshMetrics m = measure_quad_mesh(output());
+    EXPECT_EQ(m.inverted, 0) << angle;
+    EXPECT_EQ(m.base_complex_faces, 6) << angle;
+  }
 }
 
 TEST_F(Requantize, TMeshRoundTripGivesTheSameResult) {

@@ -156,14 +156,29 @@ std::string check_graph(const Prepared& p, const AngleBoundedGraph& g) {
     return std::string("completion: ") + e.what();
   }
 
-  // Non-zero chains: straight chains of cut edges from a seed, none implied by another.
+  // Non-zero chains: straight chains of cut edges from a seed — or, for a piece of trace t
+  // between two curves (nonzero_trace −2 − t), from a curve to the next along t — none
+  // implied by another.
   if (g.nonzero_chains.size() != g.nonzero_trace.size()) return "nonzero_trace size";
   if (!std::is_sorted(g.nonzero_chains.begin(), g.nonzero_chains.end())) return "not sorted";
+  std::vector<uint8_t> on_curve(topo.num_vertices(), 0);
+  for (int e = 0; e < E; ++e)
+    if (topo.is_border_edge(e) || p.feature[e])
+      for (int v : topo.edge_vertices(e)) on_curve[v] = 1;
   std::vector<std::set<int>> edge_sets;
   for (size_t c = 0; c < g.nonzero_chains.size(); ++c) {
     const auto& ch = g.nonzero_chains[c];
     const std::string name = "chain " + std::to_string(c);
-    if (ch.size() < 2 || !seeds.count(ch[0])) return name + ": not from a seed";
+    if (const int t = g.nonzero_trace[c]; t <= -2) {
+      const std::vector<int>& along = g.traces[-2 - t].vertices;
+      const auto at = std::search(along.begin(), along.end(), ch.begin(), ch.end());
+      if (ch.size() < 2 || at == along.end()) return name + ": not a piece of its trace";
+      if (!on_curve[ch.front()] || !on_curve[ch.back()]) return name + ": not curve to curve";
+      for (size_t k = 1; k + 1 < ch.size(); ++k)
+        if (on_curve[ch[k]]) return name + ": passes a curve";
+    } else if (ch.size() < 2 || !seeds.count(ch[0])) {
+      return name + ": not from a seed";
+    }
     std::set<int> es;
     for (size_t k = 0; k + 1 < ch.size(); ++k) {
       const int e = topo.find_edge(ch[k], ch[k + 1]);
@@ -183,6 +198,22 @@ std::string check_graph(const Prepared& p, const AngleBoundedGraph& g) {
       if (a != b && std::includes(edge_sets[a].begin(), edge_sets[a].end(), edge_sets[b].begin(),
                                   edge_sets[b].end()))
         return "chain " + std::to_string(a) + " implied by chain " + std::to_string(b);
+  // Every piece of a trace between two curves it reaches holds a chain (or one implying it).
+  for (size_t t = 0; t < g.traces.size(); ++t) {
+    const Trace& tr = g.traces[t];
+    for (size_t from = 0, k = 1; k < tr.vertices.size(); ++k) {
+      if (!on_curve[tr.vertices[k]]) continue;
+      if (on_curve[tr.vertices[from]]) {
+        const std::set<int> piece(tr.edges.begin() + from, tr.edges.begin() + k);
+        if (std::none_of(edge_sets.begin(), edge_sets.end(), [&](const std::set<int>& es) {
+              return std::includes(piece.begin(), piece.end(), es.begin(), es.end());
+            }))
+          return "trace " + std::to_string(t) + ": no chain between the curves at " +
+                 std::to_string(tr.vertices[from]) + " and " + std::to_string(tr.vertices[k]);
+      }
+      from = k;
+    }
+  }
   return "";
 }
 
@@ -216,7 +247,8 @@ const Trace& trace_from(const AngleBoundedGraph& g, int seed, int next) {
 TEST(TmeshAngle, FullAngleIsTheExtendedGraph) {
   for (uint64_t seed = 0; seed < 40; ++seed) {
     const Prepared p = prepare(test::random_quad_mesh(seed));
-    const std::vector<Trace> ext = trace_extended_motorcycle_graph(*p.topo, p.feature, p.seeds);
+    const std::vector<Trace> ext =
+        trace_extended_motorcycle_graph(*p.topo, p.feature, p.seeds, /*cross_features=*/true);
     for (double angle : {90.0, 135.0}) {
       const AngleBoundedGraph g = trace(p, angle);
       ASSERT_EQ(g.traces.size(), ext.size()) << seed;
@@ -296,6 +328,55 @@ TEST(TmeshAngle, SubdividedCubeTracesRunCornerToCorner) {
   EXPECT_EQ(g.crossings, 0);
   EXPECT_EQ(g.nonzero_chains.size(), 12u);  // one per cube edge (its two traces coincide)
   EXPECT_EQ(check_graph(p, g), "");
+}
+
+// Traces cross feature curves: the subdivided cube with two grid loops round it marked as
+// features, one and seven rows from the corners at one end of a cube edge. The cube edges
+// along which the loops run round are unaffected; the four crossing them still run corner to
+// corner, through both loops (a trace that stopped at a feature would leave the middle of the
+// separatrix outside the T-mesh, free to bend in a coarsening), and the piece between the
+// loops is a non-zero chain (the strip between the features cannot collapse there).
+TEST(TmeshAngle, TracesCrossFeatureLoopsAndKeepThemApart) {
+  Prepared p = prepare(test::subdivided_cube(3), 180);
+  const QuadMeshTopology& topo = *p.topo;
+  const int e0 = topo.vertex_edges(0)[0];
+  const auto mark_loop = [&](int offset) {
+    int at = 0, e = e0;
+    for (int k = 0; k < offset; ++k) {
+      at = topo.other_vertex(e, at);
+      if (k + 1 < offset) e = topo.straight_on(at, e);
+    }
+    const auto ring = topo.vertex_edges(at);
+    const int i = static_cast<int>(std::find(ring.begin(), ring.end(), e) - ring.begin());
+    int edge = ring[(i + 1) % 4], v = at, edges = 0;
+    do {
+      p.feature[edge] = 1, ++edges;
+      v = topo.other_vertex(edge, v);
+      edge = topo.straight_on(v, edge);
+    } while (v != at && edges < topo.num_edges());
+    return edges;
+  };
+  ASSERT_EQ(mark_loop(1), 32);
+  ASSERT_EQ(mark_loop(7), 32);
+  p.seeds = seed_vertices(topo, p.feature);
+  ASSERT_EQ(p.seeds.size(), 8u);  // the loops are straight: no feature corners
+  for (double angle : {10.0, 45.0}) {
+    const AngleBoundedGraph g = trace(p, angle);
+    ASSERT_EQ(g.traces.size(), 24u);
+    int crossing = 0;
+    for (const auto& t : g.traces) {
+      EXPECT_EQ(t.edges.size(), 8u) << angle;  // a cube edge, corner to corner
+      crossing += std::any_of(t.edges.begin(), t.edges.end(), [&](int e) {
+        return std::find(p.seeds.begin(), p.seeds.end(), topo.edge_vertices(e)[0]) ==
+                   p.seeds.end() &&
+               std::any_of(topo.vertex_edges(topo.edge_vertices(e)[0]).begin(),
+                           topo.vertex_edges(topo.edge_vertices(e)[0]).end(),
+                           [&](int f) { return p.feature[f] != 0; });
+      });
+    }
+    EXPECT_EQ(crossing, 8) << angle;  // 4 cube edges, a trace from each end
+    EXPECT_EQ(check_graph(p, g), "") << angle;
+  }
 }
 
 // Reflex border corners A = (3, 3) and B = (8, 4), offset (5, 1): A's trace east along y = 3

@@ -61,7 +61,8 @@ struct TracedTMesh {
   std::vector<std::vector<int>> trace_vertices;
   std::vector<std::vector<int>> extended_trace_vertices;
   // Per entry of tmesh.nonzero_paths: the trace it was made from, −1 for a cylinder half-loop,
-  // −2 for a border or feature curve piece between two seeds.
+  // −2 for a border or feature curve piece between two seeds, −3 for a piece of a trace
+  // between two curves it reaches (angle-bounded graph only).
   std::vector<int> nonzero_path_trace;
 
   // Completion cuts. Two kinds of region of the motorcycle graph are not rectangles with
