@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "core/stopwatch.hpp"
+#include "tmesh/density_search.hpp"
 #include "tmesh/separation_repair.hpp"
 #include "tmesh/smooth_requantized.hpp"
 
@@ -13,48 +15,33 @@ namespace bimdf::tmesh {
 namespace {
 
 // Density calibration (requantize.hpp): quantizations of `tm` with every arc target scaled by
-// one factor, until the quad count is within the tolerance of options.target_quads. Secant
-// steps on log quads against log factor: quads grow about as the factor squared, less where
-// separation holds short arcs at 1 — the measured slope says how much less. `base`: the targets
-// as given; the search starts at r.density_factor (the previous round's, after a repair added
-// bounds) and runs at most options.calibration_solves quantizations. Leaves tm's targets scaled
-// by the factor of the quantization returned (the closest one).
+// one factor (`base`: the targets as given), searched by search_density_factor from
+// r.density_factor (the previous round's, after a repair added bounds). Leaves tm's targets
+// scaled by the factor of the quantization returned (the closest one).
 TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
                                     const TMeshIncidence& incidence,
                                     const QuantizeOptions& quantize,
                                     const RequantizeOptions& options, RequantizeResult& r) {
   const double wanted = static_cast<double>(options.target_quads);
-  int solves = 0;
-  const auto quantize_at = [&](double factor) {
-    for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * factor;
-    ++r.calibration_solves, ++solves;
-    return quantize_tmesh(tm, incidence, quantize);
-  };
-  double factor = r.density_factor;
-  TMeshQuantization best = quantize_at(factor);
-  if (best.arc_length.empty()) return best;
-  double quads = quantized_quads(tm, best.arc_length), best_quads = quads, best_factor = factor;
-  double last_factor = 0, last_quads = 0;
-  const double limit = std::max(1.0, options.max_density_change);
-  while (solves < options.calibration_solves && quads > 0 &&
-         std::abs(quads / wanted - 1) > options.calibration_tolerance) {
-    double slope = 2;
-    if (last_factor > 0 && last_quads > 0 && last_quads != quads) {
-      slope = std::log(quads / last_quads) / std::log(factor / last_factor);
-      if (!(slope >= 0.5 && slope <= 4)) slope = 2;
-    }
-    const double next =
-        std::clamp(factor * std::exp(std::log(wanted / quads) / slope), 1 / limit, limit);
-    if (std::abs(next / factor - 1) < 1e-6) break;  // at a limit
-    last_factor = factor, last_quads = quads, factor = next;
-    TMeshQuantization q = quantize_at(factor);
-    if (q.arc_length.empty()) break;
-    quads = quantized_quads(tm, q.arc_length);
-    if (std::abs(quads - wanted) < std::abs(best_quads - wanted))
-      best = std::move(q), best_quads = quads, best_factor = factor;
-  }
-  for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * best_factor;
-  r.density_factor = best_factor;
+  TMeshQuantization best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  const detail::DensitySearch found = detail::search_density_factor(
+      wanted, r.density_factor, options.calibration_tolerance, options.calibration_solves,
+      std::max(1.0, options.max_density_change), [&](double factor) {
+        for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * factor;
+        TMeshQuantization q = quantize_tmesh(tm, incidence, quantize);
+        if (q.arc_length.empty()) {
+          if (best.arc_length.empty()) best = std::move(q);  // the first failed: report it
+          return -1.0;
+        }
+        const double quads = quantized_quads(tm, q.arc_length);
+        if (std::abs(quads - wanted) < best_distance)  // the search's choice too
+          best = std::move(q), best_distance = std::abs(quads - wanted);
+        return quads;
+      });
+  r.calibration_solves += found.solves;
+  for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * found.factor;
+  if (found.quads >= 0) r.density_factor = found.factor;
   return best;
 }
 
@@ -62,7 +49,7 @@ TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
 
 RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& options,
                             const std::string& source) {
-  detail::Stopwatch t;
+  bimdf::detail::Stopwatch t;
   TracedTMesh traced = trace_tmesh(mesh, options.trace, source);
   const double trace_s = t.lap();
   RequantizeResult r = requantize_tmesh(std::move(traced), &mesh, options, source);
@@ -75,7 +62,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   RequantizeResult r;
   r.traced = std::move(traced);
   TMesh& tm = r.traced.tmesh;
-  detail::Stopwatch t;
+  bimdf::detail::Stopwatch t;
   r.incidence = validate_tmesh(tm, source);
   const bool on_mesh = mesh && !tm.patch_grid.empty();
   QuantizeOptions quantize = options.quantize;

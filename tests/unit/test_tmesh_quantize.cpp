@@ -12,6 +12,7 @@
 #include "bimdf/tmesh/quantize.hpp"
 #include "bimdf/tmesh/requantize.hpp"
 #include "test_helpers.hpp"
+#include "tmesh/density_search.hpp"
 #include "tmesh/separation_repair.hpp"
 #include "tmesh_fixtures.hpp"
 #include "tmesh_grid_support.hpp"
@@ -228,6 +229,35 @@ TEST(TMeshQuantize, DensityCalibrationIsTheOptimumAtItsFactor) {
     moved += fitted.density_factor != 1;
   }
   EXPECT_GE(moved, 2);
+}
+
+// The factor search on quad counts with large steps (where many arcs round alike): 500 random
+// three-level step functions of the factor — too few quads below a window, the wanted count
+// in it, too many above — whose window, 0.2–2% wide, lies anywhere within the factor limits.
+// Secant steps alone hop over such a window from side to side; with the bracket the search
+// finds it every time, well within the evaluations allowed.
+TEST(TMeshQuantize, DensitySearchFindsANarrowWindowBetweenLargeSteps) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double wanted = 1000, tolerance = 0.02, limit = 2;
+  int most = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    const double width = 0.002 + 0.018 * unit(random);
+    const double low = std::log(1 / limit) + (2 * std::log(limit) - width) * unit(random);
+    const double below = wanted * (0.7 + 0.25 * unit(random));
+    const double above = wanted * (1.05 + 0.3 * unit(random));
+    const auto quads = [&](double factor) {
+      const double x = std::log(factor);
+      return x < low ? below : x < low + width ? wanted : above;
+    };
+    const double start = std::exp(std::log(limit) * (2 * unit(random) - 1));
+    const detail::DensitySearch found =
+        detail::search_density_factor(wanted, start, tolerance, 20, limit, quads);
+    EXPECT_EQ(found.quads, wanted) << "trial " << trial;
+    EXPECT_EQ(quads(found.factor), found.quads);
+    most = std::max(most, found.solves);
+  }
+  EXPECT_LE(most, 20);
 }
 
 TEST(TMeshQuantize, ValenceRepairKeepsASeedsTracesApart) {
