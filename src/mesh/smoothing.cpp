@@ -311,17 +311,28 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     }
     return worst;
   };
-  // Quads at v turned over (against either normal). Where there is none, no move may make
-  // one: the quality alone does not ensure that when a quad at v already rates below an
-  // inverted one — a sliver, penalized above, would let a move turn a good neighbour over to
-  // widen it. Where quads are turned already, the quality and the untangling decide (trading
-  // one badly turned quad for two slightly turned ones can be the way out).
-  const auto turned_at = [&](int v) {
+  // Quads at v turned over (against either normal), and the worst scaled Jacobian among them
+  // all. A move may not turn more quads over — the quality alone does not ensure that when a
+  // quad at v already rates below an inverted one: a sliver, penalized above, would let a
+  // move turn a good neighbour over to widen it — unless quads at v are turned already and
+  // the move raises that worst scaled Jacobian (trading one badly turned quad for two slightly
+  // turned ones can be the way out; the sliver penalty must not count there).
+  struct Turned {
     int count = 0;
-    for (int f : vertex_quads[v])
-      count += detail::scaled_jacobian(mesh, mesh.quads[f]) < 0 ||
-               detail::scaled_jacobian(mesh, mesh.quads[f], up[f]) < 0;
-    return count;
+    double worst = 1;
+  };
+  const auto turned_at = [&](int v) {
+    Turned t;
+    for (int f : vertex_quads[v]) {
+      const double own = detail::scaled_jacobian(mesh, mesh.quads[f]);
+      const double under = detail::scaled_jacobian(mesh, mesh.quads[f], up[f]);
+      t.count += own < 0 || under < 0;
+      t.worst = std::min({t.worst, own, under});
+    }
+    return t;
+  };
+  const auto may_turn = [&](const Turned& before, const Turned& after) {
+    return after.count <= before.count || (before.count > 0 && after.worst > before.worst);
   };
   // p back on the surface: on v's curve, or on its charts' triangles.
   const auto project = [&](int v, const std::array<double, 3>& p) {
@@ -380,13 +391,13 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     // quads at v are bad, longer and shorter steps are tried too, and then a local search
     // in the tangent plane for the position that makes the worst quad best.
     const double before = quality(v);
-    const int turned = turned_at(v);
+    const Turned turned = turned_at(v);
     std::array<double, 3> chosen = old;
     double chosen_quality = -2;
     const auto consider = [&](const std::array<double, 3>& p) {
       mesh.vertices[v] = p;
       const double q = quality(v);
-      if (q > chosen_quality && (turned > 0 || turned_at(v) == 0)) chosen_quality = q, chosen = p;
+      if (q > chosen_quality && may_turn(turned, turned_at(v))) chosen_quality = q, chosen = p;
     };
     if (before < kBad)
       for (const detail::Vec3& p : search_positions(v)) consider(project(v, p));
@@ -438,13 +449,14 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       const detail::Vec3 old = mesh.vertices[v];
       detail::Vec3 chosen = old;
       double lowest = energy(v);
-      const int tangled = inverted_at(v), turned = turned_at(v);
-      // The energy at p, +∞ where v would tangle more quads, make corners coincide or turn a
-      // quad over where none was (trading a sliver for a turned quad keeps the count of
-      // tangled ones).
+      const int tangled = inverted_at(v);
+      const Turned turned = turned_at(v);
+      // The energy at p, +∞ where v would tangle more quads, make corners coincide or turn
+      // more quads over than may_turn allows (trading a sliver for a turned quad keeps the
+      // count of tangled ones).
       const auto allowed_energy = [&](const detail::Vec3& p) {
         mesh.vertices[v] = project(v, p);
-        return inverted_at(v) <= tangled && (turned > 0 || turned_at(v) == 0)
+        return inverted_at(v) <= tangled && may_turn(turned, turned_at(v))
                    ? energy(v)
                    : std::numeric_limits<double>::infinity();
       };
