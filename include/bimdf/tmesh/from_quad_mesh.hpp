@@ -39,10 +39,11 @@ struct TraceOptions {
   double density = 1;
   // < 0: the plain motorcycle graph, with one non-zero path per trace (to where it stopped)
   // and per border or feature curve piece. ≥ 0: Lyon et al.'s angle-bounded extended graph
-  // instead (src/tmesh/angle_bounded.hpp): traces run through collisions until they have
-  // crossed, on each side, a trace whose seed lies within this angle (≥ 90: until the border,
-  // a feature or a seed), and the non-zero paths keep every seed from sliding onto another's
-  // separatrix at a deviation above the angle — the T-mesh of `requantize --coarse`.
+  // instead (src/tmesh/angle_bounded.hpp): traces run through collisions and across feature
+  // curves until they have crossed, on each side, a trace whose seed lies within this angle
+  // (≥ 90: until the border or a seed), and the non-zero paths keep every seed from sliding
+  // onto another's separatrix at a deviation above the angle, and feature curves apart where
+  // a trace crosses between them — the T-mesh of `requantize --coarse`.
   double max_angle_deg = -1;
 };
 
