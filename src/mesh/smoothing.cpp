@@ -294,45 +294,40 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
         detail::normalized(under ? detail::triangle_normal(layout.mesh, under->closest(centre).face)
                                  : detail::newell_normal(mesh, mesh.quads[f]));
   }
-  // The worst scaled Jacobian among the quads at v, against the surface's normal and against
-  // the quad's own (what metrics.hpp reports).
-  // Corners closer than kShortEdge of the longest edge count as bad as an inverted quad, down
-  // to −1 when they coincide: otherwise a vertex could escape an inverted quad by collapsing
-  // onto its neighbour (projection onto a chart clamps to its corner), which the scaled
-  // Jacobian does not see.
-  const auto quality = [&](int v) {
+  // How the quads at v rate, in one pass over them (every candidate position is rated):
+  //  * quality: the worst scaled Jacobian among them, against the surface's normal and against
+  //    the quad's own (what metrics.hpp reports), where corners closer than kShortEdge of the
+  //    longest edge count as bad as an inverted quad, down to −1 when they coincide —
+  //    otherwise a vertex could escape an inverted quad by collapsing onto its neighbour
+  //    (projection onto a chart clamps to its corner), which the scaled Jacobian does not see;
+  //  * turned, worst: how many are turned over (against either normal), and the worst scaled
+  //    Jacobian without that penalty. A move may not turn more quads over — the quality alone
+  //    does not ensure that when a quad at v already rates below an inverted one: a sliver
+  //    would let a move turn a good neighbour over to widen it — unless quads at v are turned
+  //    already and the move raises that worst scaled Jacobian (trading one badly turned quad
+  //    for two slightly turned ones can be the way out; the sliver penalty must not count
+  //    there).
+  struct Rating {
+    double quality = 1;
+    int turned = 0;
     double worst = 1;
+  };
+  const auto rate = [&](int v) {
+    Rating r;
     for (int f : vertex_quads[v]) {
       const std::array<int, 4>& q = mesh.quads[f];
       const double spread = detail::corner_spread(mesh, q);
-      if (spread < kShortEdge) worst = std::min(worst, spread / kShortEdge - 1);
-      worst = std::min(
-          {worst, detail::scaled_jacobian(mesh, q, up[f]), detail::scaled_jacobian(mesh, q)});
+      if (spread < kShortEdge) r.quality = std::min(r.quality, spread / kShortEdge - 1);
+      const double own = detail::scaled_jacobian(mesh, q);
+      const double under = detail::scaled_jacobian(mesh, q, up[f]);
+      r.turned += own < 0 || under < 0;
+      r.worst = std::min({r.worst, own, under});
     }
-    return worst;
+    r.quality = std::min(r.quality, r.worst);
+    return r;
   };
-  // Quads at v turned over (against either normal), and the worst scaled Jacobian among them
-  // all. A move may not turn more quads over — the quality alone does not ensure that when a
-  // quad at v already rates below an inverted one: a sliver, penalized above, would let a
-  // move turn a good neighbour over to widen it — unless quads at v are turned already and
-  // the move raises that worst scaled Jacobian (trading one badly turned quad for two slightly
-  // turned ones can be the way out; the sliver penalty must not count there).
-  struct Turned {
-    int count = 0;
-    double worst = 1;
-  };
-  const auto turned_at = [&](int v) {
-    Turned t;
-    for (int f : vertex_quads[v]) {
-      const double own = detail::scaled_jacobian(mesh, mesh.quads[f]);
-      const double under = detail::scaled_jacobian(mesh, mesh.quads[f], up[f]);
-      t.count += own < 0 || under < 0;
-      t.worst = std::min({t.worst, own, under});
-    }
-    return t;
-  };
-  const auto may_turn = [&](const Turned& before, const Turned& after) {
-    return after.count <= before.count || (before.count > 0 && after.worst > before.worst);
+  const auto may_turn = [&](const Rating& before, const Rating& after) {
+    return after.turned <= before.turned || (before.turned > 0 && after.worst > before.worst);
   };
   // p back on the surface: on v's curve, or on its charts' triangles.
   const auto project = [&](int v, const std::array<double, 3>& p) {
@@ -390,14 +385,14 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     // smoothing never creates an inverted quad and never worsens the worst one. Where the
     // quads at v are bad, longer and shorter steps are tried too, and then a local search
     // in the tangent plane for the position that makes the worst quad best.
-    const double before = quality(v);
-    const Turned turned = turned_at(v);
+    const Rating start = rate(v);
+    const double before = start.quality;
     std::array<double, 3> chosen = old;
     double chosen_quality = -2;
     const auto consider = [&](const std::array<double, 3>& p) {
       mesh.vertices[v] = p;
-      const double q = quality(v);
-      if (q > chosen_quality && may_turn(turned, turned_at(v))) chosen_quality = q, chosen = p;
+      const Rating r = rate(v);
+      if (r.quality > chosen_quality && may_turn(start, r)) chosen_quality = r.quality, chosen = p;
     };
     if (before < kBad)
       for (const detail::Vec3& p : search_positions(v)) consider(project(v, p));
@@ -450,13 +445,13 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       detail::Vec3 chosen = old;
       double lowest = energy(v);
       const int tangled = inverted_at(v);
-      const Turned turned = turned_at(v);
+      const Rating start = rate(v);
       // The energy at p, +∞ where v would tangle more quads, make corners coincide or turn
       // more quads over than may_turn allows (trading a sliver for a turned quad keeps the
       // count of tangled ones).
       const auto allowed_energy = [&](const detail::Vec3& p) {
         mesh.vertices[v] = project(v, p);
-        return inverted_at(v) <= tangled && may_turn(turned, turned_at(v))
+        return inverted_at(v) <= tangled && may_turn(start, rate(v))
                    ? energy(v)
                    : std::numeric_limits<double>::infinity();
       };
