@@ -6,10 +6,9 @@
 // arcs round alike (symmetric parts). The search takes secant steps on log quads against log
 // factor (the measured slope, kept within [0.5, 4], else 2; where the count did not change,
 // half the last slope, down to 0.25, so that the steps double across a flat), clamped to
-// [1/limit, limit], and
-// keeps a bracket — the largest factor seen with too few quads and the smallest with too many
-// — so that a step that would leave it (hopping over the wanted count from side to side)
-// bisects it geometrically instead. It stops within `tolerance` of the wanted count, after
+// [1/limit, limit], and keeps a bracket — the largest factor seen with too few quads and the
+// smallest with too many — so that a step that would leave it (hopping over the wanted count
+// from side to side) bisects it geometrically instead. It stops within `tolerance` of the wanted count, after
 // `max_solves` evaluations, when a step would not move (at a limit or a closed bracket), or
 // when quads_at fails (returns a negative count).
 #pragma once
