@@ -28,6 +28,21 @@ constexpr int kLeafSize = 8;
 
 }  // namespace
 
+Vec3 barycentric_coordinates(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  // Cramer's rule on the 2×2 normal equations of p − a = u (b − a) + v (c − a).
+  const Vec3 e1 = sub(b, a), e2 = sub(c, a), r = sub(p, a);
+  const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+  const double det = d11 * d22 - d12 * d12;
+  if (!(det > 0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  const double r1 = dot(r, e1), r2 = dot(r, e2);
+  Vec3 w{0, (d22 * r1 - d12 * r2) / det, (d11 * r2 - d12 * r1) / det};
+  w[0] = 1 - w[1] - w[2];
+  double total = 0;
+  for (double& x : w) total += x = std::clamp(x, 0.0, 1.0);
+  for (double& x : w) x /= total;
+  return w;
+}
+
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
   const double d1 = dot(ab, ap), d2 = dot(ac, ap);

@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <numbers>
 #include <optional>
 #include <set>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -121,6 +123,29 @@ detail::TriangleTree::Hit closest_on_polyline(const Layout& layout, const std::v
 
 // What smoothing needs that depends only on the layout and the tessellation's connectivity,
 // not on vertex positions: built once, shared by every run.
+// Per corner of each triangle of `mesh`: the sum of the (area-weighted) normals of the
+// triangles of the same chart at that corner's vertex. Charts meet at features and borders,
+// where the normal must not be blended across the crease.
+std::vector<std::array<detail::Vec3, 3>> chart_corner_normals(const TriangleMesh& mesh,
+                                                              const std::vector<int>& face_chart) {
+  std::unordered_map<int64_t, detail::Vec3> sum;
+  const auto key = [&](int f, int k) {
+    const int chart = f < static_cast<int>(face_chart.size()) ? face_chart[f] : -1;
+    return (static_cast<int64_t>(mesh.faces[f][k]) << 32) | static_cast<uint32_t>(chart);
+  };
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const detail::Vec3 n = detail::triangle_normal(mesh, f);
+    for (int k = 0; k < 3; ++k) {
+      detail::Vec3& acc = sum[key(f, k)];
+      for (int d = 0; d < 3; ++d) acc[d] += n[d];
+    }
+  }
+  std::vector<std::array<detail::Vec3, 3>> normals(mesh.num_faces());
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) normals[f][k] = sum[key(f, k)];
+  return normals;
+}
+
 struct SurfaceSmoother::Setup {
   const Layout& layout;
   Tessellation& t;
@@ -133,11 +158,14 @@ struct SurfaceSmoother::Setup {
   std::vector<std::vector<int>> neighbours;
   std::vector<std::vector<int>> vertex_quads;
   std::vector<std::unique_ptr<detail::TriangleTree>> trees;  // per chart, built on first use
+  // Per triangle corner of layout.mesh: the area-weighted normal of the triangles of the same
+  // chart at that vertex, built on first use (see surface_normal).
+  std::vector<std::array<detail::Vec3, 3>> corner_normals;
 };
 
 SurfaceSmoother::SurfaceSmoother(const Layout& layout, Tessellation& t,
                                  const std::vector<std::vector<int>>* vertex_charts)
-    : setup_(std::make_unique<Setup>(Setup{layout, t, {}, {}, {}, {}, {}, {}, {}})) {
+    : setup_(std::make_unique<Setup>(Setup{layout, t, {}, {}, {}, {}, {}, {}, {}, {}})) {
   const QuadMesh& mesh = t.mesh;
   const int nv = mesh.num_vertices();
   std::set<std::pair<int, int>> feature;
@@ -283,6 +311,23 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
         active_quads.push_back(f);
         break;
       }
+  // The surface's normal at a point: interpolated from its triangle's corner normals (within
+  // its chart), not the triangle's own. Where the surface is a quad mesh (requantize), a
+  // triangle is half a possibly non-planar quad, and its normal can tilt so far from the
+  // surface's that a fine quad measures as turned over against it.
+  if (s.corner_normals.empty())
+    s.corner_normals = chart_corner_normals(layout.mesh, layout.face_chart);
+  const auto surface_normal = [&](const detail::TriangleTree::Hit& hit) {
+    const auto& tri = layout.mesh.faces[hit.face];
+    const detail::Vec3 w =
+        detail::barycentric_coordinates(hit.point, layout.mesh.vertices[tri[0]],
+                                        layout.mesh.vertices[tri[1]], layout.mesh.vertices[tri[2]]);
+    detail::Vec3 n{0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+      for (int d = 0; d < 3; ++d)
+        n[d] += w[k] * detail::normalized(s.corner_normals[hit.face][k])[d];
+    return detail::norm(n) > 0 ? n : detail::triangle_normal(layout.mesh, hit.face);
+  };
   std::vector<std::array<double, 3>> up(mesh.num_quads());
   for (int f : active_quads) {
     std::array<double, 3> centre{0, 0, 0};
@@ -290,9 +335,8 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       for (int d = 0; d < 3; ++d) centre[d] += mesh.vertices[v][d] / 4;
     const int c = f < static_cast<int>(mesh.quad_patch.size()) ? mesh.quad_patch[f] : -1;
     const detail::TriangleTree* under = tree(c);
-    up[f] =
-        detail::normalized(under ? detail::triangle_normal(layout.mesh, under->closest(centre).face)
-                                 : detail::newell_normal(mesh, mesh.quads[f]));
+    up[f] = detail::normalized(under ? surface_normal(under->closest(centre))
+                                     : detail::newell_normal(mesh, mesh.quads[f]));
   }
   // How the quads at v rate, in one pass over them (every candidate position is rated):
   //  * quality: the worst scaled Jacobian among them, against the surface's normal and against
