@@ -348,13 +348,15 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   //    Jacobian without that penalty. A move may not turn more quads over — the quality alone
   //    does not ensure that when a quad at v already rates below an inverted one: a sliver
   //    would let a move turn a good neighbour over to widen it — unless quads at v are turned
-  //    already and the move raises that worst scaled Jacobian (trading one badly turned quad
-  //    for two slightly turned ones can be the way out; the sliver penalty must not count
-  //    there).
+  //    already and the move raises that worst scaled Jacobian while lowering the total by
+  //    which they are turned (trading one badly turned quad for two slightly turned ones can
+  //    be the way out; the sliver penalty must not count there; but raising the worst by
+  //    0.001 must not buy turning a good neighbour over, which untangling then cannot undo).
   struct Rating {
     double quality = 1;
     int turned = 0;
     double worst = 1;
+    double turned_amount = 0;  // Σ over turned quads of −(their worse scaled Jacobian)
   };
   const auto rate = [&](int v) {
     Rating r;
@@ -365,13 +367,15 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       const double own = detail::scaled_jacobian(mesh, q);
       const double under = detail::scaled_jacobian(mesh, q, up[f]);
       r.turned += own < 0 || under < 0;
+      r.turned_amount += std::max(0.0, -std::min(own, under));
       r.worst = std::min({r.worst, own, under});
     }
     r.quality = std::min(r.quality, r.worst);
     return r;
   };
   const auto may_turn = [&](const Rating& before, const Rating& after) {
-    return after.turned <= before.turned || (before.turned > 0 && after.worst > before.worst);
+    return after.turned <= before.turned || (before.turned > 0 && after.worst > before.worst &&
+                                             after.turned_amount < before.turned_amount);
   };
   // p back on the surface: on v's curve, or on its charts' triangles.
   const auto project = [&](int v, const std::array<double, 3>& p) {
