@@ -48,4 +48,25 @@ DensitySearch search_density_factor(double wanted, double start, double toleranc
   return best;
 }
 
+DensitySearch search_density_factor_within_reach(double wanted, double start, double tolerance,
+                                                 int max_solves, double limit, double reach,
+                                                 const std::function<double(double)>& quads_at) {
+  DensitySearch found =
+      search_density_factor(wanted, start, tolerance, max_solves, limit, quads_at);
+  const bool stuck = found.quads > wanted * (1 + tolerance) && found.factor * limit < 1 + 1e-9;
+  if (!stuck || reach <= limit) return found;
+  const double probe = quads_at(1 / reach);
+  ++found.solves;
+  if (probe < 0 || probe > wanted * (1 + tolerance)) return found;
+  if (probe >= wanted * (1 - tolerance)) return {1 / reach, probe, found.solves};
+  // The wanted count lies between the two factors: search from their geometric middle.
+  const DensitySearch wider = search_density_factor(wanted, 1 / std::sqrt(limit * reach), tolerance,
+                                                    max_solves, reach, quads_at);
+  DensitySearch best = std::abs(probe - wanted) < std::abs(wider.quads - wanted) || wider.quads < 0
+                           ? DensitySearch{1 / reach, probe, 0}
+                           : wider;
+  best.solves = found.solves + wider.solves;
+  return best;
+}
+
 }  // namespace bimdf::tmesh::detail

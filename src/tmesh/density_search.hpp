@@ -8,9 +8,9 @@
 // half the last slope, down to 0.25, so that the steps double across a flat), clamped to
 // [1/limit, limit], and keeps a bracket — the largest factor seen with too few quads and the
 // smallest with too many — so that a step that would leave it (hopping over the wanted count
-// from side to side) bisects it geometrically instead. It stops within `tolerance` of the wanted count, after
-// `max_solves` evaluations, when a step would not move (at a limit or a closed bracket), or
-// when quads_at fails (returns a negative count).
+// from side to side) bisects it geometrically instead. It stops within `tolerance` of the wanted
+// count, after `max_solves` evaluations, when a step would not move (at a limit or a closed
+// bracket), or when quads_at fails (returns a negative count).
 #pragma once
 
 #include <functional>
@@ -25,5 +25,15 @@ struct DensitySearch {
 
 DensitySearch search_density_factor(double wanted, double start, double tolerance, int max_solves,
                                     double limit, const std::function<double(double)>& quads_at);
+
+// As search_density_factor within [1/limit, limit]; then, if that ends at 1/limit with too
+// many quads, one evaluation at 1/reach decides: where it has too many quads as well, the
+// constraints force more quads than wanted and the first search's result stands (the open
+// regions are not thinned out for nothing); where it is within tolerance, it is taken; where
+// it has too few, the search goes on in [1/reach, 1/limit]. The result is the evaluation
+// closest to the wanted count among those the rule accepts; solves counts them all.
+DensitySearch search_density_factor_within_reach(double wanted, double start, double tolerance,
+                                                 int max_solves, double limit, double reach,
+                                                 const std::function<double(double)>& quads_at);
 
 }  // namespace bimdf::tmesh::detail

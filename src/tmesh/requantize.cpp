@@ -15,7 +15,7 @@ namespace bimdf::tmesh {
 namespace {
 
 // Density calibration (requantize.hpp): quantizations of `tm` with every arc target scaled by
-// one factor (`base`: the targets as given), searched by search_density_factor from
+// one factor (`base`: the targets as given), searched by search_density_factor_within_reach from
 // r.density_factor (the previous round's, after a repair added bounds). Leaves tm's targets
 // scaled by the factor of the quantization returned (the closest one).
 TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
@@ -23,25 +23,25 @@ TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
                                     const QuantizeOptions& quantize,
                                     const RequantizeOptions& options, RequantizeResult& r) {
   const double wanted = static_cast<double>(options.target_quads);
-  TMeshQuantization best;
-  double best_distance = std::numeric_limits<double>::infinity();
-  const detail::DensitySearch found = detail::search_density_factor(
+  // Every quantization the search runs, kept until it has chosen one (a few, each O(arcs)).
+  std::vector<std::pair<double, TMeshQuantization>> runs;
+  const detail::DensitySearch found = detail::search_density_factor_within_reach(
       wanted, r.density_factor, options.calibration_tolerance, options.calibration_solves,
-      std::max(1.0, options.max_density_change), [&](double factor) {
+      std::max(1.0, options.max_density_change), options.max_density_reach, [&](double factor) {
         for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * factor;
-        TMeshQuantization q = quantize_tmesh(tm, incidence, quantize);
-        if (q.arc_length.empty()) {
-          if (best.arc_length.empty()) best = std::move(q);  // the first failed: report it
-          return -1.0;
-        }
-        const double quads = quantized_quads(tm, q.arc_length);
-        if (std::abs(quads - wanted) < best_distance)  // the search's choice too
-          best = std::move(q), best_distance = std::abs(quads - wanted);
-        return quads;
+        runs.emplace_back(factor, quantize_tmesh(tm, incidence, quantize));
+        const TMeshQuantization& q = runs.back().second;
+        return q.arc_length.empty() ? -1.0 : quantized_quads(tm, q.arc_length);
       });
   r.calibration_solves += found.solves;
-  for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * found.factor;
-  if (found.quads >= 0) r.density_factor = found.factor;
+  // The first run when it failed (its status is reported), else the one chosen.
+  size_t chosen = 0;
+  if (found.quads >= 0)
+    while (chosen + 1 < runs.size() && runs[chosen].first != found.factor) ++chosen;
+  const double best_factor = runs[chosen].first;
+  TMeshQuantization best = std::move(runs[chosen].second);
+  for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * best_factor;
+  if (found.quads >= 0) r.density_factor = best_factor;
   return best;
 }
 

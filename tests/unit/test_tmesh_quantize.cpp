@@ -260,6 +260,34 @@ TEST(TMeshQuantize, DensitySearchFindsANarrowWindowBetweenLargeSteps) {
   EXPECT_LE(most, 20);
 }
 
+// Beyond the limit only where it pays: quads = max(floor, 1000 f²) wanting 200, 250 at the
+// limit ½. A floor of 50 puts the count at f ≈ 0.45, found between ¼ and ½; a floor of 198 is
+// within tolerance at ¼ itself; a floor of 400 is above the count at any factor, and the
+// search stays at the limit ½, not at ¼, where the constraints would thin out nothing else.
+TEST(TMeshQuantize, DensitySearchGoesBeyondTheLimitOnlyWhereItReachesTheCount) {
+  const double wanted = 200, tolerance = 0.02, limit = 2, reach = 4;
+  for (const double floor : {50.0, 198.0, 400.0}) {
+    std::vector<double> evaluated;
+    const auto quads = [&](double factor) {
+      evaluated.push_back(factor);
+      return std::max(floor, std::round(1000 * factor * factor));
+    };
+    const detail::DensitySearch found =
+        detail::search_density_factor_within_reach(wanted, 1, tolerance, 8, limit, reach, quads);
+    EXPECT_EQ(found.solves, static_cast<int>(evaluated.size())) << floor;
+    if (floor < wanted) {
+      EXPECT_LE(std::abs(found.quads / wanted - 1), tolerance) << floor;
+      EXPECT_LT(found.factor, 1 / limit) << floor;
+      EXPECT_GE(found.factor, 1 / reach) << floor;
+    } else {
+      EXPECT_EQ(found.factor, 1 / limit);
+      EXPECT_EQ(found.quads, floor);
+      EXPECT_EQ(evaluated.back(), 1 / reach);  // probed, and turned down
+    }
+    EXPECT_EQ(quads(found.factor), found.quads) << floor;
+  }
+}
+
 TEST(TMeshQuantize, ValenceRepairKeepsASeedsTracesApart) {
   // A 2 × 2 grid whose left column is thin (0.3), the centre a seed with one path, to the
   // right: the path holds with the left column collapsed, but the centre then lies on the

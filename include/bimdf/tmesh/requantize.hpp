@@ -24,12 +24,15 @@ struct RequantizeOptions {
   // target by one factor, searched (secant steps on log quads against log factor, at most
   // `calibration_solves` quantizations) until the quads are within `calibration_tolerance` of
   // this count, the closest result kept. The factor stays within [1/max_density_change,
-  // max_density_change]: where the constraints alone force more quads than asked, the open
-  // regions are not coarsened beyond that to make up for it.
+  // max_density_change]; when that leaves too many quads, the factor may go down to
+  // 1/max_density_reach if that reaches the count (the constraints nearly fill the quads asked
+  // for). Where even that leaves too many, the constraints alone force more quads than asked,
+  // and the open regions are not coarsened beyond 1/max_density_change to make up for it.
   int64_t target_quads = 0;
   double calibration_tolerance = 0.02;
   int calibration_solves = 8;
   double max_density_change = 2;
+  double max_density_reach = 4;
 };
 
 struct RequantizeResult {
