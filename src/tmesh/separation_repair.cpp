@@ -14,6 +14,22 @@ std::vector<char> seeds(const TMesh& tm) {
   return seed;
 }
 
+// Per T-mesh vertex: whether it lies on a curve — an end of a feature arc or a border arc (one
+// of whose half-arcs lies on no patch side).
+std::vector<char> on_curves(const TMesh& tm) {
+  std::vector<char> on_side(2 * tm.num_arcs(), 0);
+  for (const auto& sides : tm.patch_sides)
+    for (const auto& side : sides)
+      for (int h : side) on_side[h] = 1;
+  std::vector<char> on(tm.num_vertices(), 0);
+  for (int a = 0; a < tm.num_arcs(); ++a) {
+    const bool feature = a < static_cast<int>(tm.arc_feature.size()) && tm.arc_feature[a];
+    if (feature || !on_side[2 * a] || !on_side[2 * a + 1])
+      on[tm.arc_ends[a][0]] = on[tm.arc_ends[a][1]] = 1;
+  }
+  return on;
+}
+
 // Adds arc `a` or side pair `side` to `bounds` unless already there; returns whether added.
 bool bound_arc(int a, MinOneConstraints& bounds) {
   if (std::find(bounds.arcs.begin(), bounds.arcs.end(), a) != bounds.arcs.end()) return false;
@@ -62,25 +78,37 @@ bool add_separation_bounds(const TMesh& tm, const std::vector<int64_t>& length,
   };
   bool added = false;
   std::vector<std::pair<int, int>> came_from(adjacent.size());  // (node, element)
-  for (const CollapsedVertex& o : collapsed.origin) {
-    std::vector<int> merged;
-    for (int v : o.tmesh_vertices)
-      if (seed[v]) merged.push_back(v);
-    if (merged.size() < 2) continue;
+  // Bounds the element with the longest target on a path of merging elements from `from` to
+  // `to` (none when they merged some other way: not ours to fix).
+  const auto bound_path = [&](int from, int to) {
     std::fill(came_from.begin(), came_from.end(), std::pair<int, int>{-1, 0});
-    std::vector<int> queue{merged[0]};
-    came_from[merged[0]] = {merged[0], 0};
-    for (size_t i = 0; i < queue.size() && came_from[merged[1]].first < 0; ++i)
+    std::vector<int> queue{from};
+    came_from[from] = {from, 0};
+    for (size_t i = 0; i < queue.size() && came_from[to].first < 0; ++i)
       for (const auto& [w, element] : adjacent[queue[i]])
         if (came_from[w].first < 0) came_from[w] = {queue[i], element}, queue.push_back(w);
-    if (came_from[merged[1]].first < 0) continue;  // merged some other way: not ours to fix
+    if (came_from[to].first < 0) return;
     int best = 0;
     double best_target = -1;
-    for (int v = merged[1]; v != merged[0]; v = came_from[v].first)
+    for (int v = to; v != from; v = came_from[v].first)
       if (const int e = came_from[v].second; target(e) > best_target)
         best = e, best_target = target(e);
     added |= best >= 0 ? bound_arc(best, bounds)
                        : bound_side(SideRef{(-1 - best) / 2, (-1 - best) % 2}, bounds);
+  };
+  const std::vector<char> on_curve = on_curves(tm);
+  for (const CollapsedVertex& o : collapsed.origin) {
+    std::vector<int> merged;
+    int off_curve_seed = -1, curve_vertex = -1;
+    for (int v : o.tmesh_vertices) {
+      if (seed[v]) merged.push_back(v);
+      if (seed[v] && !on_curve[v] && off_curve_seed < 0) off_curve_seed = v;
+      if (on_curve[v] && curve_vertex < 0) curve_vertex = v;
+    }
+    if (merged.size() >= 2)
+      bound_path(merged[0], merged[1]);
+    else if (off_curve_seed >= 0 && curve_vertex >= 0)
+      bound_path(off_curve_seed, curve_vertex);
   }
   return added;
 }

@@ -15,10 +15,14 @@
 namespace bimdf::tmesh {
 
 // Seeds (T-mesh vertices where non-zero paths start: singularities, corners) merged into one
-// output vertex: for each such vertex, a breadth-first search from one seed to another over
-// what merged the points — zero arcs (joining their ends) and zero-width patches (joining
-// every T-mesh vertex of their two long sides, through a node of their own) — and a min-one
-// bound on the element of that path with the longest target. Returns whether any was added.
+// output vertex, or a seed off every curve merged onto a curve (a feature or border arc's
+// end): for each such vertex, a breadth-first search from one seed to the other, or to the
+// curve vertex, over what merged the points — zero arcs (joining their ends) and zero-width
+// patches (joining every T-mesh vertex of their two long sides, through a node of their own)
+// — and a min-one bound on the element of that path with the longest target. A singularity
+// pulled onto a straight feature curve keeps its valence but, at valence 3, leaves a single
+// quad on one side with a 180° corner, which no placement can fix. Returns whether any was
+// added.
 bool add_separation_bounds(const TMesh& tmesh, const std::vector<int64_t>& length,
                            const CollapsedMesh& collapsed, MinOneConstraints& bounds);
 

@@ -288,16 +288,24 @@ TEST(TMeshQuantize, DensitySearchGoesBeyondTheLimitOnlyWhereItReachesTheCount) {
   }
 }
 
+// A columns × rows grid T-mesh without merged cells and without paths. Arcs: horizontal ones
+// row j, column i = columns·j + i; vertical ones after them, column i, row j = (rows + 1) ·
+// columns + rows·i + j; vertex (i, j) = (columns + 1)·j + i.
+TracedTMesh plain_grid_tmesh(int columns, int rows) {
+  const int arcs = (rows + 1) * columns + (columns + 1) * rows;
+  for (uint32_t seed = 1;; ++seed) {
+    std::mt19937 rng(seed);
+    TracedTMesh traced;
+    traced.tmesh = random_grid_tmesh(rng, columns, rows, 0).tmesh;
+    if (traced.tmesh.num_arcs() == arcs) return traced;
+  }
+}
+
 TEST(TMeshQuantize, ValenceRepairKeepsASeedsTracesApart) {
   // A 2 × 2 grid whose left column is thin (0.3), the centre a seed with one path, to the
   // right: the path holds with the left column collapsed, but the centre then lies on the
   // border with 2 quads instead of 4. Only the valence repair notices (no other seed merges).
-  TracedTMesh traced;
-  for (uint32_t seed = 1;; ++seed) {  // a grid without merged cells: 6 + 6 arcs
-    std::mt19937 rng(seed);
-    traced.tmesh = random_grid_tmesh(rng, 2, 2, 0).tmesh;
-    if (traced.tmesh.num_arcs() == 12) break;
-  }
+  TracedTMesh traced = plain_grid_tmesh(2, 2);
   TMesh& t = traced.tmesh;
   // Horizontal arcs: row j, column i = 2j + i; vertical: 6 + 2i + j; centre vertex 4.
   for (int a = 0; a < 12; ++a) t.arc_target[a] = a < 6 && a % 2 == 0 ? 0.3 : 3;
@@ -309,6 +317,31 @@ TEST(TMeshQuantize, ValenceRepairKeepsASeedsTracesApart) {
   // The repair's bounds: the centre's zero arc and the collapsed patches' widths.
   EXPECT_EQ(r.repair_constraints.arcs, (std::vector<int>{2}));
   EXPECT_EQ(r.repair_constraints.sides.size(), 2);
+}
+
+// A 2 × 3 grid with a feature curve along y = 1, a seed at (1, 2) whose one path leads up,
+// away from the curve, and a thin middle row (0.3) between the two: the optimum collapses the
+// row and pulls the seed onto the curve, which its path allows. The repair bounds the row.
+TEST(TMeshQuantize, SeparationRepairKeepsASeedOffAFeatureCurve) {
+  TracedTMesh traced = plain_grid_tmesh(2, 3);
+  TMesh& t = traced.tmesh;
+  // Horizontal arcs: row j, column i = 2j + i; vertical: 8 + 3i + j; vertex (i, j) = 3j + i.
+  for (int a = 0; a < 17; ++a) t.arc_target[a] = a >= 8 && (a - 8) % 3 == 1 ? 0.3 : 3;
+  t.arc_feature.assign(17, 0);
+  t.arc_feature[2] = t.arc_feature[3] = 1;  // (0, 1) → (1, 1) → (2, 1)
+  t.nonzero_paths = {{2 * (8 + 3 + 2)}};    // (1, 2) → (1, 3)
+  const TMeshQuantization unrepaired = quantize_tmesh(t, validate_tmesh(t), {});
+  ASSERT_EQ(unrepaired.arc_length[8 + 3 + 1], 0);  // the row collapses unbounded
+  const RequantizeResult r = requantize_tmesh(traced, nullptr, {}, "grid");
+  EXPECT_EQ(r.repair_rounds, 1);
+  EXPECT_GE(r.quantization.arc_length[8 + 3 + 1], 1);
+  for (const CollapsedVertex& o : r.collapsed.origin) {
+    const auto& vs = o.tmesh_vertices;
+    if (std::find(vs.begin(), vs.end(), 7) == vs.end()) continue;
+    for (int curve_vertex : {3, 4, 5})
+      EXPECT_TRUE(std::find(vs.begin(), vs.end(), curve_vertex) == vs.end())
+          << "the seed merged with curve vertex " << curve_vertex;
+  }
 }
 
 // An annulus of two patches whose border loops have two arcs each, all of target 1: the
