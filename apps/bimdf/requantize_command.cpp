@@ -251,10 +251,18 @@ int run_requantize(const RequantizeCommandOptions& o) {
     s << "density       " << requested_density << " requested, × " << r.density_factor
       << " to aim at " << ro.target_quads << " quads (" << r.calibration_solves
       << " quantizations)\n";
+    if (r.calibration_floor >= 0) {
+      j["calibration_floor"] = r.calibration_floor;
+      std::cerr << "note: keeping singularities, features and the border apart takes more quads "
+                   "than asked for: "
+                << std::llround(r.calibration_floor) << " even at × " << 1 / ro.max_density_reach
+                << " (asked for " << ro.target_quads << "); the result stays at × "
+                << r.density_factor << "\n";
+    }
   }
   if (r.repair_rounds > 0)
     s << "separation    " << r.repair_rounds << " more solves: " << r.repair_constraints.size()
-      << " min-one bounds added where the collapse merged seeds\n";
+      << " min-one bounds added where the collapse broke separation\n";
   if (o.verbose) {
     s << "model         " << q.nodes << " nodes, " << q.edges << " edges; model "
       << ms(q.time_model_s) << ", solve " << ms(q.time_solve_s) << "\n";

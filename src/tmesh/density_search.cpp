@@ -53,11 +53,15 @@ DensitySearch search_density_factor_within_reach(double wanted, double start, do
                                                  const std::function<double(double)>& quads_at) {
   DensitySearch found =
       search_density_factor(wanted, start, tolerance, max_solves, limit, quads_at);
-  const bool stuck = found.quads > wanted * (1 + tolerance) && found.factor * limit < 1 + 1e-9;
-  if (!stuck || reach <= limit) return found;
+  // Too many quads left: the search ended at the limit or on a flat step on its way there.
+  if (!(found.quads > wanted * (1 + tolerance)) || reach <= limit) return found;
   const double probe = quads_at(1 / reach);
   ++found.solves;
-  if (probe < 0 || probe > wanted * (1 + tolerance)) return found;
+  if (probe < 0) return found;
+  if (probe > wanted * (1 + tolerance)) {
+    found.floor_quads = probe;
+    return found;
+  }
   if (probe >= wanted * (1 - tolerance)) return {1 / reach, probe, found.solves};
   // The wanted count lies between the two factors: search from their geometric middle.
   const DensitySearch wider = search_density_factor(wanted, 1 / std::sqrt(limit * reach), tolerance,

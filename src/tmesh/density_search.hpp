@@ -21,13 +21,16 @@ struct DensitySearch {
   double factor = 1;  // of the evaluation closest to the wanted count (the first of equals)
   double quads = -1;  // its count (negative: the first evaluation failed)
   int solves = 0;     // evaluations run
+  // search_density_factor_within_reach only: the count at 1/reach when it probed there and
+  // found too many quads even so — the constraints force more than wanted (else −1).
+  double floor_quads = -1;
 };
 
 DensitySearch search_density_factor(double wanted, double start, double tolerance, int max_solves,
                                     double limit, const std::function<double(double)>& quads_at);
 
-// As search_density_factor within [1/limit, limit]; then, if that ends at 1/limit with too
-// many quads, one evaluation at 1/reach decides: where it has too many quads as well, the
+// As search_density_factor within [1/limit, limit]; then, if that ends with too many quads (at
+// 1/limit, or on a flat step before it), one evaluation at 1/reach decides: where it has too many quads as well, the
 // constraints force more quads than wanted and the first search's result stands (the open
 // regions are not thinned out for nothing); where it is within tolerance, it is taken; where
 // it has too few, the search goes on in [1/reach, 1/limit]. The result is the evaluation

@@ -34,6 +34,7 @@ TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
         return q.arc_length.empty() ? -1.0 : quantized_quads(tm, q.arc_length);
       });
   r.calibration_solves += found.solves;
+  r.calibration_floor = found.floor_quads;
   // The first run when it failed (its status is reported), else the one chosen.
   size_t chosen = 0;
   if (found.quads >= 0)

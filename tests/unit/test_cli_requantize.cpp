@@ -253,7 +253,7 @@ TEST_F(Requantize, TMeshRoundTripGivesTheSameResult) {
 // The bundled bunny layout remeshed, then coarsened 2×: its 103 singularities lie closer than
 // two edges in places, so the separation constraints round short arcs up and the density as
 // given makes far more than a quarter of the quads; the calibrated density comes within 5%,
-// with the same singularities.
+// with the same singularities. At --scale 4 it cannot, and says so.
 TEST_F(Requantize, CalibrationHitsTheQuadCount) {
   const std::string layout = std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj";
   const std::string in = path("bunny_quads.obj");
@@ -279,6 +279,22 @@ TEST_F(Requantize, CalibrationHitsTheQuadCount) {
   EXPECT_EQ(j["singularities_out"], j["singularities_in"]);
   const QuadMeshMetrics m = measure_quad_mesh(read_obj_quads(path("out.obj")));
   EXPECT_TRUE(m.manifold());
+  EXPECT_FALSE(j.contains("calibration_floor"));
+  // At --scale 4 the separation constraints hold the count far above input / 16 even at a
+  // quarter of that density: the calibration says so and keeps to its limit.
+  r = run("requantize " + in + " -o " + path("out4.obj") + " --json --scale 4");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json four = json::parse(r.out);
+  const double floor = four["calibration_floor"].get<double>();
+  EXPECT_GT(floor, 1.02 * four["target_quads"].get<double>());
+  EXPECT_GE(four["density_factor"].get<double>(), 0.5);
+  EXPECT_GE(four["quads"].get<double>(), 0.9 * floor);
+  EXPECT_NE(r.err.find("note: keeping singularities, features and the border apart takes more "
+                       "quads than asked for: " +
+                       std::to_string(std::llround(floor)) + " even at × 0.25 (asked for " +
+                       std::to_string(four["target_quads"].get<int64_t>()) + ")"),
+            std::string::npos)
+      << r.err;
 }
 
 TEST_F(Requantize, ClosedGridWithoutSingularitiesIsRefused) {

@@ -45,9 +45,13 @@ struct RequantizeResult {
   MinOneConstraints repair_constraints;
   // Density calibration: the factor the T-mesh's arc targets were multiplied by (1 without
   // calibration; traced.tmesh holds the scaled targets), and the quantizations it took (at
-  // most calibration_solves per round: calibration runs again after each repair round).
+  // most 2·calibration_solves + 1 per round: calibration runs again after each repair round).
+  // calibration_floor: the quads at factor 1/max_density_reach when the last calibration tried
+  // it and still had too many — the separation constraints force more quads than asked for,
+  // and the result stays at 1/max_density_change (−1 otherwise).
   double density_factor = 1;
   int calibration_solves = 0;
+  double calibration_floor = -1;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
 
