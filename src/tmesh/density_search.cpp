@@ -66,9 +66,10 @@ DensitySearch search_density_factor_within_reach(double wanted, double start, do
   // The wanted count lies between the two factors: search from their geometric middle.
   const DensitySearch wider = search_density_factor(wanted, 1 / std::sqrt(limit * reach), tolerance,
                                                     max_solves, reach, quads_at);
-  DensitySearch best = std::abs(probe - wanted) < std::abs(wider.quads - wanted) || wider.quads < 0
-                           ? DensitySearch{1 / reach, probe, 0}
-                           : wider;
+  DensitySearch best = found;
+  for (const DensitySearch& candidate : {DensitySearch{1 / reach, probe, 0}, wider})
+    if (candidate.quads >= 0 && std::abs(candidate.quads - wanted) < std::abs(best.quads - wanted))
+      best = candidate;
   best.solves = found.solves + wider.solves;
   return best;
 }

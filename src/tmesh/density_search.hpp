@@ -30,11 +30,12 @@ DensitySearch search_density_factor(double wanted, double start, double toleranc
                                     double limit, const std::function<double(double)>& quads_at);
 
 // As search_density_factor within [1/limit, limit]; then, if that ends with too many quads (at
-// 1/limit, or on a flat step before it), one evaluation at 1/reach decides: where it has too many quads as well, the
-// constraints force more quads than wanted and the first search's result stands (the open
-// regions are not thinned out for nothing); where it is within tolerance, it is taken; where
-// it has too few, the search goes on in [1/reach, 1/limit]. The result is the evaluation
-// closest to the wanted count among those the rule accepts; solves counts them all.
+// 1/limit, or on a flat step before it), one evaluation at 1/reach decides. Where it has too
+// many quads as well, the constraints force more quads than wanted and the first search's
+// result stands (the open regions are not thinned out for nothing); where it is within
+// tolerance, it is taken; where it has too few, a second search starts between 1/reach and
+// 1/limit (clamped to [1/reach, reach]). The result is the evaluation closest to the wanted
+// count among those the rule accepts; solves counts them all.
 DensitySearch search_density_factor_within_reach(double wanted, double start, double tolerance,
                                                  int max_solves, double limit, double reach,
                                                  const std::function<double(double)>& quads_at);
