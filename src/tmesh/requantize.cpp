@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <utility>
 
 #include "core/stopwatch.hpp"
@@ -86,8 +85,8 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                           on_mesh ? mesh : nullptr, options.quantize.relaxed);
     r.time_collapse_s += t.lap();
     // Both checks run, so that one round bounds every fault found.
-    const bool merged = add_separation_bounds(tm, r.quantization.arc_length, r.collapsed,
-                                              quantize.extra_constraints);
+    const bool merged = add_separation_bounds(tm, r.incidence, r.quantization.arc_length,
+                                              r.collapsed, quantize.extra_constraints);
     const bool folded =
         add_valence_bounds(tm, r.quantization.arc_length, r.collapsed, quantize.extra_constraints);
     if (!merged && !folded) break;

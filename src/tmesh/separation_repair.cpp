@@ -14,17 +14,12 @@ std::vector<char> seeds(const TMesh& tm) {
   return seed;
 }
 
-// Per T-mesh vertex: whether it lies on a curve — an end of a feature arc or a border arc (one
-// of whose half-arcs lies on no patch side).
-std::vector<char> on_curves(const TMesh& tm) {
-  std::vector<char> on_side(2 * tm.num_arcs(), 0);
-  for (const auto& sides : tm.patch_sides)
-    for (const auto& side : sides)
-      for (int h : side) on_side[h] = 1;
+// Per T-mesh vertex: whether it lies on a curve — an end of a feature arc or a border arc.
+std::vector<char> on_curves(const TMesh& tm, const TMeshIncidence& incidence) {
   std::vector<char> on(tm.num_vertices(), 0);
   for (int a = 0; a < tm.num_arcs(); ++a) {
     const bool feature = a < static_cast<int>(tm.arc_feature.size()) && tm.arc_feature[a];
-    if (feature || !on_side[2 * a] || !on_side[2 * a + 1])
+    if (feature || incidence.is_border(2 * a) || incidence.is_border(2 * a + 1))
       on[tm.arc_ends[a][0]] = on[tm.arc_ends[a][1]] = 1;
   }
   return on;
@@ -44,8 +39,9 @@ bool bound_side(SideRef side, MinOneConstraints& bounds) {
 
 }  // namespace
 
-bool add_separation_bounds(const TMesh& tm, const std::vector<int64_t>& length,
-                           const CollapsedMesh& collapsed, MinOneConstraints& bounds) {
+bool add_separation_bounds(const TMesh& tm, const TMeshIncidence& incidence,
+                           const std::vector<int64_t>& length, const CollapsedMesh& collapsed,
+                           MinOneConstraints& bounds) {
   const std::vector<char> seed = seeds(tm);
   // Nodes: T-mesh vertices, then one per patch and side pair. Edges carry their element:
   // arc a ≥ 0, or −1 − (2·patch + pair).
@@ -96,7 +92,7 @@ bool add_separation_bounds(const TMesh& tm, const std::vector<int64_t>& length,
     added |= best >= 0 ? bound_arc(best, bounds)
                        : bound_side(SideRef{(-1 - best) / 2, (-1 - best) % 2}, bounds);
   };
-  const std::vector<char> on_curve = on_curves(tm);
+  const std::vector<char> on_curve = on_curves(tm, incidence);
   for (const CollapsedVertex& o : collapsed.origin) {
     std::vector<int> merged;
     int off_curve_seed = -1, curve_vertex = -1;

@@ -23,8 +23,9 @@ namespace bimdf::tmesh {
 // pulled onto a straight feature curve keeps its valence but, at valence 3, leaves a single
 // quad on one side with a 180° corner, which no placement can fix. Returns whether any was
 // added.
-bool add_separation_bounds(const TMesh& tmesh, const std::vector<int64_t>& length,
-                           const CollapsedMesh& collapsed, MinOneConstraints& bounds);
+bool add_separation_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
+                           const std::vector<int64_t>& length, const CollapsedMesh& collapsed,
+                           MinOneConstraints& bounds);
 
 // Seeds whose output vertex has a different number of quads around it than the seed has patch
 // corners (every quad at a seed is a patch corner, since all its edges are cut): traces leaving
