@@ -21,34 +21,13 @@ namespace {
 
 using nlohmann::json;
 
-// The mean length of the mesh's edges (each counted once per quad side).
-double mean_edge_length(const QuadMesh& mesh) {
-  double sum = 0;
-  for (const auto& q : mesh.quads)
-    for (int a = 0; a < 4; ++a) {
-      const auto& p = mesh.vertices[q[a]];
-      const auto& r = mesh.vertices[q[(a + 1) % 4]];
-      sum += std::sqrt((p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]) +
-                       (p[2] - r[2]) * (p[2] - r[2]));
-    }
-  return mesh.quads.empty() ? 0 : sum / (4.0 * mesh.quads.size());
-}
-
 // Output quad edges per input edge, from --scale / --edge-length / --target-faces.
 double density(const RequantizeCommandOptions& o, const QuadMesh* mesh) {
-  if (o.target_faces > 0) {
-    if (!mesh || mesh->quads.empty())
-      throw UsageError{"--target-faces needs the quad mesh the T-mesh was made from"};
-    return std::sqrt(static_cast<double>(o.target_faces) / mesh->num_quads());
-  }
-  if (o.edge_length > 0) {
-    if (!mesh || mesh->quads.empty())
-      throw UsageError{"--edge-length needs the quad mesh the T-mesh was made from"};
-    const double mean = mean_edge_length(*mesh);
-    if (!(mean > 0)) throw InputError(o.mesh, "", "all edges have length 0");
-    return mean / o.edge_length;
-  }
-  return 1 / o.scale;
+  if ((o.target_faces > 0 || o.edge_length > 0) && (!mesh || mesh->quads.empty()))
+    throw UsageError{std::string(o.target_faces > 0 ? "--target-faces" : "--edge-length") +
+                     " needs the quad mesh the T-mesh was made from"};
+  if (!mesh) return 1 / o.scale;
+  return tmesh::requested_density(*mesh, o.scale, o.edge_length, o.target_faces, o.mesh);
 }
 
 json valences(const std::map<int, int>& counts) {
@@ -182,7 +161,9 @@ int run_requantize(const RequantizeCommandOptions& o) {
       throw UsageError{o.tmesh_in + " refers to a quad mesh's vertices: give that mesh as MESH"};
   } else {
     ro.trace.sharp_angle_deg = o.sharp_angle;
-    ro.trace.max_angle_deg = o.max_angle >= 0 ? o.max_angle : o.coarse ? kDefaultCoarseAngle : -1;
+    ro.trace.max_angle_deg = o.max_angle >= 0 ? o.max_angle
+                             : o.coarse       ? tmesh::kDefaultCoarseMaxAngle
+                                              : -1;
     requested_density = ro.trace.density = density(o, &mesh);
     if (!o.feature_file.empty())
       ro.trace.feature_edges = tmesh::read_quad_feature_file(o.feature_file, mesh);

@@ -24,7 +24,7 @@ struct RequantizeCommandOptions {
   std::string cost = "quadratic";
   bool coarse = false;
   std::string coarse_lengths = "uniform";
-  double max_angle = -1;  // < 0: not given (--coarse then uses kDefaultCoarseAngle)
+  double max_angle = -1;  // < 0: not given (--coarse then uses tmesh::kDefaultCoarseMaxAngle)
   int threads = 1;
   bool relaxed = false;       // --relaxed: irregular quad patches allowed at a cost
   double relaxed_weight = 1;  // --relaxed-weight: cost per unit of flow turning a corner
@@ -32,9 +32,6 @@ struct RequantizeCommandOptions {
   bool verbose = false;
   OutputOptions out;  // --json, --report FILE
 };
-
-// The angle bound --coarse uses when --max-angle is not given.
-inline constexpr double kDefaultCoarseAngle = 20;
 
 CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& options);
 

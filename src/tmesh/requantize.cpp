@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
+#include "bimdf/error.hpp"
 #include "core/stopwatch.hpp"
 #include "tmesh/density_search.hpp"
 #include "tmesh/separation_repair.hpp"
@@ -46,6 +48,32 @@ TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
 }
 
 }  // namespace
+
+double mean_edge_length(const QuadMesh& mesh) {
+  double sum = 0;
+  for (const auto& q : mesh.quads)
+    for (int a = 0; a < 4; ++a) {
+      const auto& p = mesh.vertices[q[a]];
+      const auto& r = mesh.vertices[q[(a + 1) % 4]];
+      sum += std::sqrt((p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]) +
+                       (p[2] - r[2]) * (p[2] - r[2]));
+    }
+  return mesh.quads.empty() ? 0 : sum / (4.0 * mesh.quads.size());
+}
+
+double requested_density(const QuadMesh& mesh, double scale, double edge_length,
+                         int64_t target_faces, const std::string& source) {
+  if (mesh.quads.empty()) throw std::invalid_argument("the quad mesh has no quads");
+  if (target_faces > 0) return std::sqrt(static_cast<double>(target_faces) / mesh.num_quads());
+  if (edge_length > 0) {
+    const double mean = mean_edge_length(mesh);
+    if (!(mean > 0)) throw InputError(source, "", "all edges have length 0");
+    return mean / edge_length;
+  }
+  if (!(scale > 0) || !std::isfinite(scale))
+    throw std::invalid_argument("the scale must be a positive number");
+  return 1 / scale;
+}
 
 RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& options,
                             const std::string& source) {

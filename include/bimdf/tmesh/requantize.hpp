@@ -55,6 +55,21 @@ struct RequantizeResult {
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
 
+// The largest deviation of separatrices from the input's grid lines, in degrees, that
+// `--coarse` traces with when none is given (TraceOptions::max_angle_deg; Lyon et al. 2021).
+inline constexpr double kDefaultCoarseMaxAngle = 20;
+
+// The mean length of the mesh's edges (each counted once per quad side); 0 without quads.
+double mean_edge_length(const QuadMesh& mesh);
+
+// Output quad edges per input edge (TraceOptions::density) for what a user asks for: with
+// target_faces > 0, sqrt(target_faces / quads); else with edge_length > 0, the mesh's mean
+// edge length / edge_length; else 1 / scale. Throws InputError naming `source` when the edge
+// lengths are needed and all are 0, std::invalid_argument for a mesh without quads or a
+// non-positive scale.
+double requested_density(const QuadMesh& mesh, double scale, double edge_length,
+                         int64_t target_faces, const std::string& source);
+
 // Traces `mesh` (all quads; errors name `source`), then as requantize_tmesh.
 RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& options,
                             const std::string& source);

@@ -1,0 +1,379 @@
+// Meshes through Python: QuadWild layouts quantized and remeshed (quant/), quad meshes
+// requantized (tmesh/requantize.hpp), quality measured (metrics.hpp), OBJ files. Meshes cross
+// as numpy arrays — vertices float64 (n, 3), faces int64 (m, 3|4) — and reports as dicts
+// with the keys of the CLI's JSON reports (docs/formats.md), so that scripts can switch between
+// the two. The options and their defaults are the CLI's, so both give the same meshes.
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <optional>
+
+#include "arrays.hpp"
+#include "bimdf/io.hpp"
+#include "bimdf/metrics.hpp"
+#include "bimdf/quant/quantize.hpp"
+#include "bimdf/quant/tessellate.hpp"
+#include "bimdf/tmesh/requantize.hpp"
+#include "bindings.hpp"
+
+namespace bimdf::python {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <size_t N>
+std::vector<std::array<int, N>> faces_from_python(py::handle faces, int num_vertices) {
+  auto rows = index_rows<N>(faces, "F");
+  for (size_t f = 0; f < rows.size(); ++f)
+    for (int v : rows[f])
+      if (v < 0 || v >= num_vertices)
+        throw py::value_error("F[" + std::to_string(f) + "]: vertex " + std::to_string(v) +
+                              " out of range (V has " + std::to_string(num_vertices) + " rows)");
+  return rows;
+}
+
+QuadMesh quad_mesh_from_python(py::handle V, py::handle F) {
+  QuadMesh mesh;
+  mesh.vertices = point_rows(V, "V");
+  mesh.quads = faces_from_python<4>(F, mesh.num_vertices());
+  mesh.quad_patch.assign(mesh.quads.size(), -1);
+  if (mesh.quads.empty()) throw py::value_error("F: no faces");
+  return mesh;
+}
+
+py::tuple mesh_to_python(const QuadMesh& mesh) {
+  return py::make_tuple(rows_to_numpy<double>(mesh.vertices), rows_to_numpy<int64_t>(mesh.quads));
+}
+
+py::dict by_valence(const std::map<int, int>& counts) {
+  py::dict d;
+  for (auto [valence, n] : counts) d[py::str(std::to_string(valence))] = n;
+  return d;
+}
+
+// The dict of `bimdf metrics --json` (apps/bimdf/remesh_command.cpp: report_metrics).
+py::dict metrics_to_python(const QuadMeshMetrics& m) {
+  py::dict d;
+  d["faces"] = m.faces;
+  d["vertices"] = m.vertices;
+  d["edges"] = m.edges;
+  d["euler_characteristic"] = m.euler_characteristic;
+  d["boundary_edges"] = m.boundary_edges;
+  d["manifold"] = m.manifold();
+  d["non_manifold_edges"] = m.non_manifold_edges;
+  d["non_manifold_vertices"] = m.non_manifold_vertices;
+  d["singular_vertices"] = m.singular_vertices();
+  d["interior_singularities"] = by_valence(m.interior_singularities);
+  d["boundary_singularities"] = by_valence(m.boundary_singularities);
+  py::dict sj;
+  sj["min"] = m.scaled_jacobian_min;
+  sj["mean"] = m.scaled_jacobian_mean;
+  sj["p5"] = m.scaled_jacobian_p5;
+  d["scaled_jacobian"] = sj;
+  d["inverted"] = m.inverted;
+  d["degenerate"] = m.degenerate;
+  d["base_complex_faces"] = m.base_complex_faces;
+  if (m.hausdorff >= 0) {
+    d["hausdorff"] = m.hausdorff;
+    d["hausdorff_relative"] = m.hausdorff_relative;
+    d["flipped"] = m.flipped;
+  }
+  return d;
+}
+
+// A layout: a path to QuadWild's NAME.obj (beside NAME.patch, NAME.corners, …) or a tuple
+// (V, F, patch, corners): triangles, the chart of each face, each chart's corner vertices.
+quant::Layout layout_from_python(py::handle layout) {
+  if (py::isinstance<py::str>(layout) || py::hasattr(layout, "__fspath__")) {
+    const std::string path = py::str(py::module_::import("os").attr("fspath")(layout));
+    require_file(path);
+    py::gil_scoped_release release;
+    return quant::read_quadwild_layout(path);
+  }
+  if (!py::isinstance<py::tuple>(layout) || py::len(layout) != 4)
+    throw py::type_error("layout: expected a path or a tuple (V, F, patch, corners)");
+  const auto t = py::reinterpret_borrow<py::tuple>(layout);
+  TriangleMesh mesh;
+  mesh.vertices = point_rows(t[0], "V");
+  mesh.faces = faces_from_python<3>(t[1], mesh.num_vertices());
+  std::vector<int> face_chart;
+  for (int64_t c : int64_vector(t[2], "patch", mesh.num_faces())) {
+    if (c < 0 || c > std::numeric_limits<int>::max())
+      throw py::value_error("patch: chart ids must be >= 0, got " + std::to_string(c));
+    face_chart.push_back(static_cast<int>(c));
+  }
+  std::vector<std::vector<int>> corners;
+  for (py::handle c : t[3]) {
+    corners.emplace_back();
+    for (int64_t v : int64_vector(c, "corners")) corners.back().push_back(static_cast<int>(v));
+  }
+  return quant::build_layout(std::move(mesh), std::move(face_chart), corners, "<arrays>");
+}
+
+quant::QuantizeOptions quantize_options(double scale, std::optional<double> edge_length,
+                                        std::optional<int64_t> target_faces, bool align,
+                                        int threads, std::optional<double> time_limit) {
+  if (!(scale > 0) || !std::isfinite(scale)) throw py::value_error("scale must be > 0");
+  if (edge_length && !(*edge_length > 0 && std::isfinite(*edge_length)))
+    throw py::value_error("edge_length must be > 0");
+  if (target_faces && *target_faces < 1) throw py::value_error("target_faces must be >= 1");
+  if (int(scale != 1) + int(bool(edge_length)) + int(bool(target_faces)) > 1)
+    throw py::value_error("give at most one of scale, edge_length, target_faces");
+  if (threads < 1) throw py::value_error("threads must be >= 1");
+  if (time_limit && !(*time_limit > 0 && std::isfinite(*time_limit)))
+    throw py::value_error("time_limit must be a positive number of seconds");
+  quant::QuantizeOptions q;
+  q.scale = scale;
+  q.edge_length = edge_length.value_or(0);
+  q.target_faces = target_faces.value_or(0);
+  q.align = align;
+  q.threads = threads;
+  q.time_limit = time_limit.value_or(-1);
+  return q;
+}
+
+quant::SmoothingOptions smoothing_options(int iterations, double damping) {
+  if (iterations < 0) throw py::value_error("smooth_iterations must be >= 0");
+  if (!(damping >= 0 && damping <= 1)) throw py::value_error("smooth_damping must be in [0, 1]");
+  return {iterations, damping};
+}
+
+py::dict quantization_to_python(const quant::Quantization& q) {
+  const quant::QuantizationRound& last = q.final_round();
+  py::dict d;
+  d["status"] = std::string(status_name(last.solution.status));
+  d["objective"] = last.solution.objective;
+  d["edge_length"] = q.edge_length;
+  d["estimated_quads"] = std::llround(last.estimated_quads);
+  d["rounds"] = q.rounds.size();
+  d["lengths"] = to_numpy(q.lengths());
+  d["targets"] = to_numpy(q.targets);
+  double model_s = 0, solve_s = 0;
+  for (const auto& r : q.rounds) model_s += r.time_model_s, solve_s += r.time_solve_s;
+  d["time"] = py::dict(py::arg("model_s") = model_s, py::arg("solve_s") = solve_s);
+  return d;
+}
+
+py::dict quantize(py::handle layout_arg, double scale, std::optional<double> edge_length,
+                  std::optional<int64_t> target_faces, bool align, int threads,
+                  std::optional<double> time_limit) {
+  const quant::QuantizeOptions options =
+      quantize_options(scale, edge_length, target_faces, align, threads, time_limit);
+  const quant::Layout layout = layout_from_python(layout_arg);
+  std::optional<quant::Quantization> q;
+  {
+    py::gil_scoped_release release;
+    q = quant::quantize(layout, options);
+  }
+  py::dict d = quantization_to_python(*q);
+  d["subsides"] = layout.subsides.size();
+  d["warnings"] = layout.warnings;
+  return d;
+}
+
+py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge_length,
+                 std::optional<int64_t> target_faces, bool align, int smooth_iterations,
+                 double smooth_damping, int threads, std::optional<double> time_limit) {
+  const auto start = std::chrono::steady_clock::now();
+  const quant::QuantizeOptions options =
+      quantize_options(scale, edge_length, target_faces, align, threads, time_limit);
+  const quant::SmoothingOptions smoothing = smoothing_options(smooth_iterations, smooth_damping);
+  const quant::Layout layout = layout_from_python(layout_arg);
+  std::optional<quant::Quantization> q;
+  quant::Tessellation t;
+  QuadMeshMetrics metrics;
+  {
+    py::gil_scoped_release release;
+    q = quant::quantize(layout, options);
+    t = quant::tessellate(layout, q->lengths(), smoothing);
+    metrics = measure_quad_mesh(t.mesh, &layout.mesh);
+  }
+  py::dict report;
+  report["quads"] = t.mesh.num_quads();
+  report["quantization"] = quantization_to_python(*q);
+  report["metrics"] = metrics_to_python(metrics);
+  report["warnings"] = layout.warnings;
+  report["time"] = py::dict(
+      py::arg("patterns_s") = t.time_patterns_s, py::arg("mapping_s") = t.time_mapping_s,
+      py::arg("smoothing_s") = t.time_smoothing_s, py::arg("total_s") = seconds_since(start));
+  py::tuple vf = mesh_to_python(t.mesh);
+  return py::make_tuple(vf[0], vf[1], report);
+}
+
+py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<double> edge_length,
+                     std::optional<int64_t> target_faces, bool coarse,
+                     std::optional<double> max_angle, bool relaxed, double relaxed_weight,
+                     double sharp_angle, const std::string& cost, const std::string& coarse_lengths,
+                     bool calibrate, int smooth_iterations, double smooth_damping, int threads) {
+  const auto start = std::chrono::steady_clock::now();
+  const QuadMesh mesh = quad_mesh_from_python(V, F);
+  if (int(scale != 1) + int(bool(edge_length)) + int(bool(target_faces)) > 1)
+    throw py::value_error("give at most one of scale, edge_length, target_faces");
+  if (coarse && relaxed) throw py::value_error("coarse and relaxed exclude each other");
+  if (cost != "quadratic" && cost != "abs")
+    throw py::value_error("cost must be 'quadratic' or 'abs', got '" + cost + "'");
+  if (coarse_lengths != "uniform" && coarse_lengths != "fitted")
+    throw py::value_error("coarse_lengths must be 'uniform' or 'fitted'");
+  if (max_angle && !(*max_angle >= 0 && *max_angle <= 90))
+    throw py::value_error("max_angle must be in [0, 90]");
+  if (!(sharp_angle >= 0 && sharp_angle <= 180))
+    throw py::value_error("sharp_angle must be in [0, 180]");
+  if (!(relaxed_weight > 0) || !std::isfinite(relaxed_weight))
+    throw py::value_error("relaxed_weight must be > 0");
+  if (edge_length && !(*edge_length > 0 && std::isfinite(*edge_length)))
+    throw py::value_error("edge_length must be > 0");
+  if (target_faces && *target_faces < 1) throw py::value_error("target_faces must be >= 1");
+  if (threads < 1) throw py::value_error("threads must be >= 1");
+  tmesh::RequantizeOptions ro;
+  ro.quantize.cost =
+      cost == "abs" ? tmesh::DeviationCost::Absolute : tmesh::DeviationCost::Quadratic;
+  ro.quantize.coarse = coarse;
+  ro.quantize.coarse_uniform = coarse_lengths == "uniform";
+  ro.quantize.relaxed = relaxed;
+  ro.quantize.relaxed_weight = relaxed_weight;
+  ro.quantize.threads = threads;
+  ro.smoothing = smoothing_options(smooth_iterations, smooth_damping);
+  ro.trace.sharp_angle_deg = sharp_angle;
+  ro.trace.max_angle_deg = max_angle ? *max_angle : coarse ? tmesh::kDefaultCoarseMaxAngle : -1;
+  ro.trace.density = tmesh::requested_density(mesh, scale, edge_length.value_or(0),
+                                              target_faces.value_or(0), "<arrays>");
+  tmesh::RequantizeResult r;
+  QuadMeshMetrics out_metrics;
+  {
+    py::gil_scoped_release release;
+    tmesh::TracedTMesh traced = tmesh::trace_tmesh(mesh, ro.trace, "<arrays>");
+    if (calibrate && !coarse)
+      ro.target_quads = std::max<int64_t>(1, std::llround(tmesh::target_quads(traced.tmesh)));
+    r = tmesh::requantize_tmesh(std::move(traced), &mesh, ro, "<arrays>");
+    if (!r.collapsed.mesh.quads.empty()) {
+      TriangleMesh reference;
+      reference.vertices = mesh.vertices;
+      for (const auto& quad : mesh.quads) {
+        reference.faces.push_back({quad[0], quad[1], quad[2]});
+        reference.faces.push_back({quad[0], quad[2], quad[3]});
+      }
+      out_metrics = measure_quad_mesh(r.collapsed.mesh, &reference);
+    }
+  }
+  const tmesh::TMeshQuantization& q = r.quantization;
+  if (q.arc_length.empty())
+    throw py::value_error(
+        "the T-mesh has no valid quantization (opposite sides cannot be made "
+        "equal with the non-zero paths kept)");
+  py::dict report;
+  report["status"] = std::string(status_name(q.status));
+  report["objective"] = q.objective;
+  report["tmesh_patches"] = r.traced.tmesh.num_patches();
+  report["tmesh_arcs"] = r.traced.tmesh.num_arcs();
+  report["nonzero_paths"] = r.traced.tmesh.nonzero_paths.size();
+  report["min_one_constraints"] = q.constraints.size();
+  report["zero_arcs"] = q.zero_arcs;
+  report["repair_rounds"] = r.repair_rounds;
+  report["density"] = ro.trace.density;
+  if (ro.target_quads > 0) {
+    report["target_quads"] = ro.target_quads;
+    report["density_factor"] = r.density_factor;
+    if (r.calibration_floor >= 0) report["calibration_floor"] = r.calibration_floor;
+  }
+  report["quads"] = r.collapsed.mesh.num_quads();
+  report["quads_in"] = mesh.num_quads();
+  report["collapsed_patches"] = r.collapsed.collapsed_patches;
+  report["irregular_patches"] = r.collapsed.irregular_patches;
+  report["metrics"] = metrics_to_python(out_metrics);
+  report["time"] = py::dict(
+      py::arg("trace_s") = r.time_trace_s, py::arg("quantize_s") = r.time_quantize_s,
+      py::arg("collapse_s") = r.time_collapse_s, py::arg("smoothing_s") = r.time_smoothing_s,
+      py::arg("total_s") = seconds_since(start));
+  py::tuple vf = mesh_to_python(r.collapsed.mesh);
+  return py::make_tuple(vf[0], vf[1], report);
+}
+
+TriangleMesh reference_from_python(py::handle reference) {
+  if (py::isinstance<py::str>(reference) || py::hasattr(reference, "__fspath__")) {
+    const std::string path = py::str(py::module_::import("os").attr("fspath")(reference));
+    require_file(path);
+    return read_obj_triangles(path);
+  }
+  if (!py::isinstance<py::tuple>(reference) || py::len(reference) != 2)
+    throw py::type_error("reference: expected a path to a triangle OBJ or a tuple (V, F)");
+  const auto t = py::reinterpret_borrow<py::tuple>(reference);
+  TriangleMesh mesh;
+  mesh.vertices = point_rows(t[0], "reference V");
+  const py::array faces = py::array::ensure(t[1]);
+  if (faces && faces.ndim() == 2 && faces.shape(1) == 4) {
+    for (const auto& q : faces_from_python<4>(t[1], mesh.num_vertices())) {
+      mesh.faces.push_back({q[0], q[1], q[2]});
+      mesh.faces.push_back({q[0], q[2], q[3]});
+    }
+  } else {
+    mesh.faces = faces_from_python<3>(t[1], mesh.num_vertices());
+  }
+  return mesh;
+}
+
+}  // namespace
+
+void bind_mesh(py::module_& m) {
+  m.def("quantize", &quantize, py::arg("layout"), py::kw_only(), py::arg("scale") = 1.0,
+        py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
+        py::arg("align") = true, py::arg("threads") = 1, py::arg("time_limit") = py::none(),
+        "Quantizes a QuadWild layout (a path to NAME.obj, or a tuple (V, F, patch, corners)) "
+        "as `bimdf quantize` does. Returns a dict: status, objective, edge_length, "
+        "estimated_quads, lengths (int64 per subside), targets, time.");
+  m.def("remesh", &remesh, py::arg("layout"), py::kw_only(), py::arg("scale") = 1.0,
+        py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
+        py::arg("align") = true, py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
+        py::arg("threads") = 1, py::arg("time_limit") = py::none(),
+        "Quantizes and tessellates a QuadWild layout as `bimdf remesh` does. Returns (V, F, "
+        "report): vertices float64 (n, 3), quads int64 (m, 4), the report dict.");
+  m.def(
+      "requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("scale") = 1.0,
+      py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
+      py::arg("coarse") = false, py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
+      py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0, py::arg("cost") = "quadratic",
+      py::arg("coarse_lengths") = "uniform", py::arg("calibrate") = true,
+      py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5, py::arg("threads") = 1,
+      "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
+      "coarse=True the coarsest layout the separation constraints allow). Returns (V, F, "
+      "report).");
+  m.def(
+      "metrics",
+      [](py::handle V, py::handle F, py::handle reference) {
+        const QuadMesh mesh = quad_mesh_from_python(V, F);
+        std::optional<TriangleMesh> ref;
+        if (!reference.is_none()) ref = reference_from_python(reference);
+        QuadMeshMetrics m;
+        {
+          py::gil_scoped_release release;
+          m = measure_quad_mesh(mesh, ref ? &*ref : nullptr);
+        }
+        return metrics_to_python(m);
+      },
+      py::arg("V"), py::arg("F"), py::arg("reference") = py::none(),
+      "Quality of a quad mesh as `bimdf metrics` reports it; reference: a triangle OBJ path or "
+      "(V, F) of triangles or quads, for the Hausdorff distance and flipped faces.");
+  m.def(
+      "read_obj",
+      [](const std::string& path) {
+        require_file(path);
+        return mesh_to_python(read_obj_quads(path));
+      },
+      py::arg("path"), "Reads an all-quad OBJ: (V, F).");
+  m.def(
+      "write_obj",
+      [](const std::string& path, py::handle V, py::handle F) {
+        const QuadMesh mesh = quad_mesh_from_python(V, F);
+        std::ofstream out(path, std::ios::binary);
+        if (!out) throw py::value_error(path + ": cannot be written");
+        write_obj(out, mesh);
+        if (!out.flush()) throw py::value_error(path + ": writing failed");
+      },
+      py::arg("path"), py::arg("V"), py::arg("F"), "Writes a quad mesh as OBJ.");
+}
+
+}  // namespace bimdf::python

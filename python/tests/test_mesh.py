@@ -1,0 +1,135 @@
+"""bimdf.quantize / remesh / requantize / metrics / OBJ files: the same meshes and numbers as the
+CLI, layouts from arrays, and the documented errors."""
+
+import json
+
+import numpy as np
+import pytest
+
+import bimdf
+from helpers import BUNNY_LAYOUT, run_cli
+
+
+def assert_same_numbers(ours, theirs, path="report"):
+    """Every key of `theirs` is in `ours` with the same value (floats to 1e-9 relative)."""
+    if isinstance(theirs, dict):
+        for key, value in theirs.items():
+            assert key in ours, f"{path}: missing {key}"
+            assert_same_numbers(ours[key], value, f"{path}.{key}")
+    elif isinstance(theirs, float):
+        assert ours == pytest.approx(theirs, rel=1e-9), path
+    else:
+        assert ours == theirs, path
+
+
+def layout_triangles():
+    lines = BUNNY_LAYOUT.read_text().splitlines()
+    V = np.array([[float(x) for x in l.split()[1:4]] for l in lines if l.startswith("v ")])
+    F = np.array([[int(x.split("/")[0]) - 1 for x in l.split()[1:]] for l in lines
+                  if l.startswith("f ")])
+    return V, F
+
+
+def read_cli_report(tmp_path, *args):
+    report = tmp_path / "report.json"
+    run_cli(*args, "--report", report)
+    return json.loads(report.read_text())
+
+
+@pytest.fixture(scope="module")
+def bunny_remeshed(tmp_path_factory):
+    """The bundled layout remeshed by the CLI: (OBJ path, its report)."""
+    folder = tmp_path_factory.mktemp("remesh")
+    out = folder / "bunny.obj"
+    report = folder / "report.json"
+    run_cli("remesh", BUNNY_LAYOUT, "-o", out, "--report", report)
+    return out, json.loads(report.read_text())
+
+
+def test_remesh_equals_the_cli_mesh(bunny_remeshed):
+    cli_obj, cli_report = bunny_remeshed
+    V, F, report = bimdf.remesh(str(BUNNY_LAYOUT))
+    V_cli, F_cli = bimdf.read_obj(str(cli_obj))
+    assert V.dtype == np.float64 and F.dtype == np.int64 and F.shape[1] == 4
+    np.testing.assert_array_equal(F, F_cli)
+    np.testing.assert_array_equal(V, V_cli)  # the OBJ writer round-trips doubles exactly
+    assert report["quads"] == len(F) == cli_report["metrics"]["faces"]
+    assert_same_numbers(report["metrics"], cli_report["metrics"])
+    assert report["quantization"]["objective"] == pytest.approx(
+        cli_report["quantization"]["objective"], rel=1e-12)
+
+
+def test_quantize_equals_the_cli_and_layouts_from_arrays_equal_files(tmp_path):
+    cli = json.loads(run_cli("quantize", BUNNY_LAYOUT, "--json").stdout)
+    q = bimdf.quantize(str(BUNNY_LAYOUT))
+    np.testing.assert_array_equal(q["lengths"], cli["subside_lengths"])
+    assert q["objective"] == pytest.approx(cli["objective"], rel=1e-12)
+    assert q["status"] == cli["status"] == "optimal"
+
+    # The same layout handed over as arrays: triangles, face → patch, each patch's corners.
+    V, F = layout_triangles()
+    patch = np.loadtxt(BUNNY_LAYOUT.with_suffix(".patch"), dtype=np.int64)[1:]
+    numbers = [int(x) for x in BUNNY_LAYOUT.with_suffix(".corners").read_text().split()]
+    corners, i = [], 1
+    for _ in range(numbers[0]):
+        corners.append(numbers[i + 1:i + 1 + numbers[i]])
+        i += 1 + numbers[i]
+    from_arrays = bimdf.quantize((V, F, patch, corners))
+    np.testing.assert_array_equal(from_arrays["lengths"], q["lengths"])
+
+
+def test_requantize_equals_the_cli(bunny_remeshed, tmp_path):
+    cli_obj, _ = bunny_remeshed
+    V_in, F_in = bimdf.read_obj(str(cli_obj))
+    for args, kwargs in [(["--scale", "2"], {"scale": 2.0}),
+                         (["--coarse", "--max-angle", "35"], {"coarse": True, "max_angle": 35.0})]:
+        out = tmp_path / "rq.obj"
+        cli_report = read_cli_report(tmp_path, "requantize", cli_obj, "-o", out, *args)
+        V, F, report = bimdf.requantize(V_in, F_in.astype(np.int32), **kwargs)
+        V_cli, F_cli = bimdf.read_obj(str(out))
+        np.testing.assert_array_equal(F, F_cli)
+        np.testing.assert_array_equal(V, V_cli)
+        for key in ("status", "quads", "zero_arcs", "tmesh_patches", "nonzero_paths"):
+            assert report[key] == cli_report[key], key
+        assert_same_numbers(report["metrics"], cli_report["metrics"])
+
+
+def test_metrics_equal_the_cli(bunny_remeshed):
+    cli_obj, _ = bunny_remeshed
+    cli = json.loads(run_cli("metrics", cli_obj, "--reference", BUNNY_LAYOUT, "--json").stdout)
+    V, F = bimdf.read_obj(str(cli_obj))
+    m = bimdf.metrics(V, F, reference=str(BUNNY_LAYOUT))
+    assert_same_numbers(m, {k: v for k, v in cli.items() if k not in ("mesh", "reference")})
+    # The reference handed over as arrays measures the same.
+    assert_same_numbers(bimdf.metrics(V, F, reference=layout_triangles()), m)
+
+
+def test_obj_round_trip(tmp_path):
+    V = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=np.float64)
+    F = np.array([[0, 1, 2, 3]])
+    bimdf.write_obj(str(tmp_path / "q.obj"), V, F)
+    V2, F2 = bimdf.read_obj(str(tmp_path / "q.obj"))
+    np.testing.assert_array_equal(V2, V)
+    np.testing.assert_array_equal(F2, F)
+
+
+def test_mesh_errors_are_the_documented_exceptions(tmp_path):
+    V = np.zeros((4, 3))
+    with pytest.raises(ValueError, match=r"^F: expected shape \(m, 4\), got \(1, 3\)$"):
+        bimdf.metrics(V, np.array([[0, 1, 2]]))
+    with pytest.raises(ValueError, match=r"^F\[0\]: vertex 4 out of range \(V has 4 rows\)$"):
+        bimdf.metrics(V, np.array([[0, 1, 2, 4]]))
+    with pytest.raises(ValueError, match=r"^V: expected shape \(n, 3\), got \(4, 2\)$"):
+        bimdf.metrics(np.zeros((4, 2)), np.array([[0, 1, 2, 3]]))
+    with pytest.raises(TypeError, match=r"^F: expected an integer array, got dtype float64$"):
+        bimdf.requantize(V, np.array([[0.0, 1.0, 2.0, 3.0]]))
+    with pytest.raises(ValueError, match=r"^scale must be > 0$"):
+        bimdf.remesh(str(BUNNY_LAYOUT), scale=0.0)
+    with pytest.raises(ValueError, match=r"^give at most one of scale, edge_length, target_faces$"):
+        bimdf.remesh(str(BUNNY_LAYOUT), scale=2.0, target_faces=100)
+    with pytest.raises(FileNotFoundError, match="no such file"):
+        bimdf.remesh(str(tmp_path / "missing.obj"))
+    broken = tmp_path / "broken.obj"
+    broken.write_text("v 0 0 0\nf 1 2 3\n")
+    with pytest.raises(bimdf.InputError, match="broken.obj"):
+        bimdf.remesh(str(broken))
