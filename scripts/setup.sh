@@ -13,7 +13,7 @@ packages=(
   zlib1g-dev                       # PNG compression (bimdf render)
   clang libclang-rt-14-dev         # libFuzzer harnesses in CI
   pybind11-dev python3-pybind11    # the Python module (python/)
-  python3-dev python3-numpy python3-pytest
+  python3-dev python3-numpy python3-pytest python3-matplotlib
   parallel                         # scripts/batch.sh: whole folders of meshes
 )
 

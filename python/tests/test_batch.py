@@ -9,9 +9,13 @@ import csv
 import os
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
+
+import bimdf
 
 from helpers import REPO, cli, shared_data
 
@@ -128,3 +132,33 @@ def test_batch_refuses_out_dir_equal_to_in_dir(tmp_path):
     assert r.returncode == 2
     assert "OUT_DIR" in r.stderr
     assert (tmp_path / "mesh.obj").read_text() == "v 0 0 0\n"
+
+
+def test_python_loop_of_batch_md_remeshes_like_the_cli(tmp_path):
+    """The concurrent.futures loop that docs/batch.md shows, run as written on three layouts."""
+    layouts = shared_data("layouts")
+    text = (REPO / "docs" / "batch.md").read_text()
+    start = text.index("```python\nimport csv, json, sys") + len("```python\n")
+    script = tmp_path / "batch_remesh.py"
+    script.write_text(text[start:text.index("```\n", start)])
+    inp, out = tmp_path / "in", tmp_path / "out"
+    names = ["dragknob", "eight", "mushroom"]
+    for name in names:
+        shutil.copytree(layouts / name, inp / name)
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    r = subprocess.run([sys.executable, str(script), str(inp), str(out)], env=env,
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert r.stdout.strip() == "3 meshes: 3 done, 0 failed"
+    with open(out / "summary.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert [row["name"] for row in rows] == names
+    for row in rows:
+        cli_obj = tmp_path / f"{row['name']}_cli.obj"
+        subprocess.run([str(cli()), "remesh", str(inp / row["name"] / f"{row['name']}.obj"),
+                        "-o", str(cli_obj)], check=True, capture_output=True, timeout=600)
+        V, F = bimdf.read_obj(str(out / f"{row['name']}.obj"))
+        V_cli, F_cli = bimdf.read_obj(str(cli_obj))
+        np.testing.assert_array_equal(F, F_cli)
+        np.testing.assert_array_equal(V, V_cli)
+        assert row["status"] == "optimal" and int(row["quads"]) == len(F_cli)
