@@ -16,6 +16,7 @@
 #include "bimdf/summary.hpp"
 #include "bimdf/version.hpp"
 #include "memory_setup.hpp"
+#include "number_checks.hpp"
 #include "output.hpp"
 #include "quantize_command.hpp"
 #include "remesh_command.hpp"
@@ -254,7 +255,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(generator_family_names()));
   generate->add_option("--size", size, "Approximate number of edges")
       ->default_val(10000)
-      ->check(CLI::Range(int64_t{1}, int64_t{100000000}));
+      ->check(whole_number_from(1, 100000000));
   generate->add_option("--seed", seed, "Random seed")->default_val(1);
   generate->add_option("-o,--output", generate_out, "Output file (default: stdout)");
   generate->add_option("--to", generate_format, "bimdf or json (default: from the extension)")

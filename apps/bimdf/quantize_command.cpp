@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "bimdf/io.hpp"
+#include "number_checks.hpp"
 #include "solve_command.hpp"
 
 namespace bimdf::cli {
@@ -63,35 +64,35 @@ void add_quantize_options(CLI::App* cmd, QuantizeCommandOptions& o) {
                                 "Target edge length as a multiple of the mesh's average triangle "
                                 "edge (QuadWild's scaleFact)")
                     ->default_val(1.0)
-                    ->check(CLI::PositiveNumber);
+                    ->check(positive_number());
   auto* length = cmd->add_option("--edge-length", o.quantize.edge_length,
                                  "Absolute target edge length (in the mesh's units)")
-                     ->check(CLI::PositiveNumber);
+                     ->check(positive_number());
   auto* faces = cmd->add_option("--target-faces", o.quantize.target_faces,
                                 "Pick the edge length for about this many quads")
-                    ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+                    ->check(positive_whole_number());
   scale->excludes(length)->excludes(faces);
   length->excludes(faces);
   cmd->add_option("--alpha", o.quantize.model.alpha, "Isometry weight α; regularity gets 1 − α")
       ->default_val(0.005)
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_from(0.0, 1.0));
   cmd->add_flag("--align,!--no-align", o.quantize.align,
                 "Align singularities along chains of quads (default: on)");
   cmd->add_option("--align-weight", o.quantize.model.align_weight,
                   "Weight of singularity alignment (alignSingularitiesWeight)")
       ->default_val(0.1)
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_option("--nonquad-weight", o.quantize.model.nonquad_weight,
                   "Regularity weight of non-quad charts (regularityNonQuadrilateralsWeight)")
       ->default_val(0.9)
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_option("--unalign-weights", o.unalign_weights,
                   "Price of misalignment along chains in rounds 1 and 2 (unalign_weight of "
                   "paired_initial and paired_resolve)")
       ->expected(2)
       ->delimiter(',')
       ->default_str("2,4")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_flag("--half-targets", o.half_targets,
                 "Split an aligned side's target in the middle (flow_virtual_half) instead of "
                 "where a triangle's regular pattern puts the separatrix");
@@ -99,14 +100,14 @@ void add_quantize_options(CLI::App* cmd, QuantizeCommandOptions& o) {
                 "Drop pairs the first solve could not align and solve again (default: on)");
   cmd->add_option("--threads", o.quantize.threads, "Worker threads for independent components")
       ->default_val(1)
-      ->check(CLI::Range(1, 256));
+      ->check(whole_number_from(1, 256));
   add_matching_option(cmd, o.quantize.matching,
                       "Perfect matching solver of the exact solves: lemon (the optimum the "
                       "remesh results were measured with) or blossom (faster; may pick another "
                       "optimum)");
   cmd->add_option("--time-limit", o.quantize.time_limit,
                   "Seconds per solve; then the best quantization found (default: none)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--write-bimdf", o.write_bimdf,
                   "Also write the final round's Bi-MDF model (.bimdf or .json by extension)");
 }

@@ -11,6 +11,7 @@
 #include "bimdf/io.hpp"
 #include "bimdf/metrics.hpp"
 #include "bimdf/quant/tessellate.hpp"
+#include "number_checks.hpp"
 
 namespace bimdf::cli {
 namespace {
@@ -135,11 +136,11 @@ void add_smoothing_options(CLI::App* cmd, quant::SmoothingOptions& smoothing) {
   cmd->add_option("--smooth-iterations", smoothing.iterations,
                   "Smoothing rounds on the surface after stitching (0: none)")
       ->default_val(30)
-      ->check(CLI::Range(0, 100000));
+      ->check(whole_number_from(0, 100000));
   cmd->add_option("--smooth-damping", smoothing.damping,
                   "How far each round moves a vertex towards its smoothed position")
       ->default_val(0.5)
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_from(0.0, 1.0));
 }
 
 TessellationReport report_metrics(const QuadMeshMetrics& m) {

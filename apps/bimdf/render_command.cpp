@@ -4,6 +4,7 @@
 
 #include "bimdf/error.hpp"
 #include "bimdf/mesh.hpp"
+#include "number_checks.hpp"
 #include "output.hpp"
 
 namespace bimdf::cli {
@@ -16,15 +17,16 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
   cmd->add_option("-o,--output", o.picture, "The PNG file to write")->required();
   cmd->add_option("--width", o.render.width, "Image width in pixels")
       ->default_val(1200)
-      ->check(CLI::Range(16, 8192));
+      ->check(whole_number_from(16, 8192));
   cmd->add_option("--height", o.render.height, "Image height in pixels")
       ->default_val(900)
-      ->check(CLI::Range(16, 8192));
+      ->check(whole_number_from(16, 8192));
   cmd->add_option("--view", o.view,
                   "Viewing direction X,Y,Z, from the camera towards the mesh (default: "
                   "automatic, along the mesh's thinnest axis)")
       ->expected(3)
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(finite_number());
   cmd->add_flag("--no-edges", o.no_edges, "Do not draw the quad edges");
   cmd->add_flag("--no-patches", o.no_patches, "One colour for all quads");
   cmd->add_flag("--no-singularities", o.no_singularities,

@@ -14,6 +14,7 @@
 #include "bimdf/tmesh/collapse.hpp"
 #include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/requantize.hpp"
+#include "number_checks.hpp"
 #include "remesh_command.hpp"
 
 namespace bimdf::cli {
@@ -54,12 +55,12 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                                 "Output edge length as a multiple of the input's (quads ≈ "
                                 "input quads / F²)")
                     ->default_val(1.0)
-                    ->check(CLI::PositiveNumber);
+                    ->check(positive_number());
   auto* length = cmd->add_option("--edge-length", o.edge_length,
                                  "Absolute target edge length (in the mesh's units)")
-                     ->check(CLI::PositiveNumber);
+                     ->check(positive_number());
   auto* faces = cmd->add_option("--target-faces", o.target_faces, "Aim at about this many quads")
-                    ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+                    ->check(positive_whole_number());
   scale->excludes(length)->excludes(faces);
   length->excludes(faces);
   cmd->add_flag("--no-calibration", o.no_calibration,
@@ -78,7 +79,7 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                   "With --relaxed: the cost per unit of flow turning a corner (smaller: more "
                   "irregular patches)")
       ->default_val(1.0)
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->needs(relaxed);
   // The coarse objective exists to collapse arcs, which relaxed quantization never does.
   relaxed->excludes("--coarse");
@@ -93,14 +94,14 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                   "Trace the angle-bounded extended motorcycle graph (Lyon et al. 2021): "
                   "separatrices may deviate from the input's grid lines by at most this many "
                   "degrees (90: unbounded); default 20 with --coarse, else the plain graph")
-      ->check(CLI::Range(0.0, 90.0));
+      ->check(number_from(0.0, 90.0));
   cmd->add_option("--cost", o.cost, "Deviation cost of each arc from its target length")
       ->default_val("quadratic")
       ->check(CLI::IsMember({"quadratic", "abs"}));
   cmd->add_option("--sharp-angle", o.sharp_angle,
                   "Edges whose dihedral angle exceeds this many degrees are features (180: none)")
       ->default_val(35.0)
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(number_from(0.0, 180.0));
   cmd->add_option("--feature", o.feature_file,
                   "Feature edges of the quad mesh (QuadWild-style: count, then `face,edge` lines)");
   cmd->add_option("--layout-out", o.layout_out,
@@ -111,7 +112,7 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
   out->excludes(in);
   cmd->add_option("--threads", o.threads, "Worker threads of the solver")
       ->default_val(1)
-      ->check(CLI::Range(1, 256));
+      ->check(whole_number_from(1, 256));
   add_smoothing_options(cmd, o.smoothing);
   cmd->add_flag("--json", o.out.json, "Print the report as JSON on stdout");
   cmd->add_option("--report", o.out.file, "Also write the report JSON to this file");

@@ -8,6 +8,7 @@
 
 #include "bimdf/io.hpp"
 #include "bimdf/solve.hpp"
+#include "number_checks.hpp"
 
 namespace bimdf::cli {
 namespace {
@@ -157,7 +158,7 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   cmd->add_option("--max-deviation", o.max_deviation,
                   "U: deviation from the guess modelled exactly at even points")
       ->default_val(5)
-      ->check(CLI::Range(0, 1000));
+      ->check(whole_number_from(0, 1000));
   cmd->add_option("--parity", o.parity,
                   "Parity repair: tjoin (spanning-tree T-join) or round-to-even")
       ->default_val("tjoin")
@@ -168,13 +169,13 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   cmd->add_flag("--no-simplify", o.no_simplify, "Do not collapse chains of pass-through nodes");
   cmd->add_option("--threads", o.threads, "Worker threads for independent components")
       ->default_val(1)
-      ->check(CLI::Range(1, 256));
+      ->check(whole_number_from(1, 256));
   cmd->add_option("--max-rounds", o.max_rounds,
                   "Refinement rounds per component before returning the best flow as feasible")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_whole_number());
   cmd->add_option("--time-limit", o.time_limit,
                   "Seconds before refinement stops and returns the best flow as feasible")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("--no-lower-bound", o.no_lower_bound, "Skip the LP-relaxation lower bound");
   add_matching_option(cmd, o.matching,
                       "Perfect matching solver of the refinement: blossom (bimdf's own, "

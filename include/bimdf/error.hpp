@@ -25,4 +25,9 @@ class InputError : public std::runtime_error {
   std::string description_;
 };
 
+// The description of an InputError for a mesh whose vertices all coincide: no edge length to
+// derive a density from, and nothing to parametrize.
+inline constexpr char kCoincidentVertices[] =
+    "all vertices are at the same position (every edge has length 0), expected a surface";
+
 }  // namespace bimdf

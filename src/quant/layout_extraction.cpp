@@ -142,6 +142,9 @@ Layout build_layout(TriangleMesh mesh, std::vector<int> face_chart,
     edge_sum +=
         distance_single(mesh.vertices[from_vertex(mesh, h)], mesh.vertices[to_vertex(mesh, h)]);
   layout.average_edge_length = F > 0 ? edge_sum / static_cast<float>(3 * F) : 0;
+  // A zero length would make every target length infinite; --edge-length would instead build a
+  // mesh of degenerate quads after minutes of smoothing.
+  if (F > 0 && !(layout.average_edge_length > 0)) throw InputError(source, "", kCoincidentVertices);
 
   std::vector<std::vector<int>> corner_charts(V);  // which charts have v as a corner
   for (int c = 0; c < P; ++c)

@@ -15,6 +15,7 @@
 
 #include "bimdf/error.hpp"
 #include "bimdf/io.hpp"
+#include "bimdf/tmesh/requantize.hpp"
 #include "io/text_scan.hpp"
 #include "tmesh/angle_bounded.hpp"
 #include "tmesh/motorcycle.hpp"
@@ -172,6 +173,8 @@ TracedTMesh trace_tmesh(const QuadMesh& mesh, const TraceOptions& options,
   if (!(options.density > 0) || !std::isfinite(options.density))
     throw std::invalid_argument("trace_tmesh: density must be positive and finite");
   const QuadMeshTopology topo(mesh, source);
+  if (!mesh.quads.empty() && !(mean_edge_length(mesh) > 0))
+    throw InputError(source, "", kCoincidentVertices);
   const int V = topo.num_vertices(), E = topo.num_edges();
   const std::vector<uint8_t> feature = detail::detect_feature_edges(
       mesh, topo, options.sharp_angle_deg, options.feature_edges, source);

@@ -67,7 +67,7 @@ double requested_density(const QuadMesh& mesh, double scale, double edge_length,
   if (target_faces > 0) return std::sqrt(static_cast<double>(target_faces) / mesh.num_quads());
   if (edge_length > 0) {
     const double mean = mean_edge_length(mesh);
-    if (!(mean > 0)) throw InputError(source, "", "all edges have length 0");
+    if (!(mean > 0)) throw InputError(source, "", kCoincidentVertices);
     return mean / edge_length;
   }
   if (!(scale > 0) || !std::isfinite(scale))
