@@ -2,6 +2,7 @@
 // number formatting, shell output, and replacing a generated section of a Markdown file.
 #pragma once
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -35,6 +36,14 @@ struct LayoutReference {
   int noalign_quads = 0, align_quads = 0;
 };
 std::vector<LayoutReference> read_layout_references(const std::string& dir);
+
+// One row of a shared layouts folder's quadwild_quality.tsv: QuadWild's final mesh measured
+// with our metric (min-of-four-corners scaled Jacobian), keyed by mesh name; empty without it.
+struct QuadWildQuality {
+  double min = 0, mean = 0, p5 = 0;
+  int inverted = 0;
+};
+std::map<std::string, QuadWildQuality> read_quadwild_quality(const std::string& dir);
 
 // Fixed-point text, "–" for NaN.
 std::string fmt(double v, int precision = 3);

@@ -85,7 +85,8 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
          {"time",
           {{"patterns_s", t.time_patterns_s},
            {"mapping_s", t.time_mapping_s},
-           {"smoothing_s", t.time_smoothing_s}}}};
+           {"smoothing_s", t.time_smoothing_s},
+           {"polish_s", t.time_polish_s}}}};
   std::ostringstream s;
   s << "quad mesh     " << out << ": " << t.mesh.num_quads() << " quads, " << t.mesh.num_vertices()
     << " vertices\n";
@@ -94,7 +95,7 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
     << kinds[quant::PatternKind::Fan] << " fans (of " << charts << " charts); " << singular
     << " interior singularities\n";
   s << "tessellation  patterns " << ms(t.time_patterns_s) << ", mapping " << ms(t.time_mapping_s)
-    << ", smoothing " << ms(t.time_smoothing_s) << "\n";
+    << ", smoothing " << ms(t.time_smoothing_s) << ", polish " << ms(t.time_polish_s) << "\n";
   if (verbose)
     for (size_t c = 0; c < t.charts.size(); ++c)
       if (t.charts[c].quads > 0 && t.charts[c].kind != quant::PatternKind::Regular)
@@ -141,6 +142,11 @@ void add_smoothing_options(CLI::App* cmd, quant::SmoothingOptions& smoothing) {
                   "How far each round moves a vertex towards its smoothed position")
       ->default_val(0.5)
       ->check(number_from(0.0, 1.0));
+  cmd->add_option("--quality-rounds", smoothing.quality_rounds,
+                  "Rounds of quality polishing after smoothing: corners moved towards right "
+                  "angles, never lowering a vertex's worst quad or leaving the surface (0: none)")
+      ->default_val(5)
+      ->check(whole_number_from(0, 1000));
 }
 
 TessellationReport report_metrics(const QuadMeshMetrics& m) {

@@ -146,6 +146,7 @@ def remesh(
     align: bool = True,
     smooth_iterations: int = 30,
     smooth_damping: float = 0.5,
+    quality_rounds: int = 5,
     threads: int = 1,
     time_limit: float | None = None,
 ) -> Mesh: ...
@@ -166,6 +167,7 @@ def requantize(
     calibrate: bool = True,
     smooth_iterations: int = 30,
     smooth_damping: float = 0.5,
+    quality_rounds: int = 5,
     threads: int = 1,
 ) -> Mesh: ...
 def metrics(

@@ -137,10 +137,11 @@ quant::QuantizeOptions quantize_options(double scale, std::optional<double> edge
   return q;
 }
 
-quant::SmoothingOptions smoothing_options(int iterations, double damping) {
+quant::SmoothingOptions smoothing_options(int iterations, double damping, int quality_rounds) {
   if (iterations < 0) throw py::value_error("smooth_iterations must be >= 0");
   if (!(damping >= 0 && damping <= 1)) throw py::value_error("smooth_damping must be in [0, 1]");
-  return {iterations, damping};
+  if (quality_rounds < 0) throw py::value_error("quality_rounds must be >= 0");
+  return {iterations, damping, quality_rounds};
 }
 
 py::dict quantization_to_python(const quant::Quantization& q) {
@@ -178,11 +179,13 @@ py::dict quantize(py::handle layout_arg, double scale, std::optional<double> edg
 
 py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge_length,
                  std::optional<int64_t> target_faces, bool align, int smooth_iterations,
-                 double smooth_damping, int threads, std::optional<double> time_limit) {
+                 double smooth_damping, int quality_rounds, int threads,
+                 std::optional<double> time_limit) {
   const auto start = std::chrono::steady_clock::now();
   const quant::QuantizeOptions options =
       quantize_options(scale, edge_length, target_faces, align, threads, time_limit);
-  const quant::SmoothingOptions smoothing = smoothing_options(smooth_iterations, smooth_damping);
+  const quant::SmoothingOptions smoothing =
+      smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
   const quant::Layout layout = layout_from_python(layout_arg);
   std::optional<quant::Quantization> q;
   quant::Tessellation t;
@@ -198,9 +201,10 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
   report["quantization"] = quantization_to_python(*q);
   report["metrics"] = metrics_to_python(metrics);
   report["warnings"] = layout.warnings;
-  report["time"] = py::dict(
-      py::arg("patterns_s") = t.time_patterns_s, py::arg("mapping_s") = t.time_mapping_s,
-      py::arg("smoothing_s") = t.time_smoothing_s, py::arg("total_s") = seconds_since(start));
+  report["time"] =
+      py::dict(py::arg("patterns_s") = t.time_patterns_s, py::arg("mapping_s") = t.time_mapping_s,
+               py::arg("smoothing_s") = t.time_smoothing_s, py::arg("polish_s") = t.time_polish_s,
+               py::arg("total_s") = seconds_since(start));
   py::tuple vf = mesh_to_python(t.mesh);
   return py::make_tuple(vf[0], vf[1], report);
 }
@@ -209,7 +213,8 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
                      std::optional<int64_t> target_faces, bool coarse,
                      std::optional<double> max_angle, bool relaxed, double relaxed_weight,
                      double sharp_angle, const std::string& cost, const std::string& coarse_lengths,
-                     bool calibrate, int smooth_iterations, double smooth_damping, int threads) {
+                     bool calibrate, int smooth_iterations, double smooth_damping,
+                     int quality_rounds, int threads) {
   const auto start = std::chrono::steady_clock::now();
   const QuadMesh mesh = quad_mesh_from_python(V, F);
   if (int(scale != 1) + int(bool(edge_length)) + int(bool(target_faces)) > 1)
@@ -237,7 +242,7 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   ro.quantize.relaxed = relaxed;
   ro.quantize.relaxed_weight = relaxed_weight;
   ro.quantize.threads = threads;
-  ro.smoothing = smoothing_options(smooth_iterations, smooth_damping);
+  ro.smoothing = smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
   ro.trace.sharp_angle_deg = sharp_angle;
   ro.trace.max_angle_deg = max_angle ? *max_angle : coarse ? tmesh::kDefaultCoarseMaxAngle : -1;
   ro.trace.density = tmesh::requested_density(mesh, scale, edge_length.value_or(0),
@@ -328,19 +333,20 @@ void bind_mesh(py::module_& m) {
   m.def("remesh", &remesh, py::arg("layout"), py::kw_only(), py::arg("scale") = 1.0,
         py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
         py::arg("align") = true, py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
-        py::arg("threads") = 1, py::arg("time_limit") = py::none(),
+        py::arg("quality_rounds") = 5, py::arg("threads") = 1, py::arg("time_limit") = py::none(),
         "Quantizes and tessellates a QuadWild layout as `bimdf remesh` does. Returns (V, F, "
         "report): vertices float64 (n, 3), quads int64 (m, 4), the report dict.");
-  m.def(
-      "requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("scale") = 1.0,
-      py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
-      py::arg("coarse") = false, py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
-      py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0, py::arg("cost") = "quadratic",
-      py::arg("coarse_lengths") = "uniform", py::arg("calibrate") = true,
-      py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5, py::arg("threads") = 1,
-      "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
-      "coarse=True the coarsest layout the separation constraints allow). Returns (V, F, "
-      "report).");
+  m.def("requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(),
+        py::arg("scale") = 1.0, py::arg("edge_length") = py::none(),
+        py::arg("target_faces") = py::none(), py::arg("coarse") = false,
+        py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
+        py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0,
+        py::arg("cost") = "quadratic", py::arg("coarse_lengths") = "uniform",
+        py::arg("calibrate") = true, py::arg("smooth_iterations") = 30,
+        py::arg("smooth_damping") = 0.5, py::arg("quality_rounds") = 5, py::arg("threads") = 1,
+        "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
+        "coarse=True the coarsest layout the separation constraints allow). Returns (V, F, "
+        "report).");
   m.def(
       "metrics",
       [](py::handle V, py::handle F, py::handle reference) {

@@ -150,4 +150,27 @@ TriangleTree::Hit TriangleTree::closest(const Vec3& p) const {
   return best;
 }
 
+bool TriangleTree::any_within(int index, const Vec3& p, double radius2) const {
+  const Node& node = nodes_[index];
+  if (node.left < 0) {
+    for (int i = node.first; i < node.first + node.count; ++i) {
+      const auto& f = mesh_.faces[order_[i]];
+      const Vec3 d = sub(closest_point_on_triangle(p, mesh_.vertices[f[0]], mesh_.vertices[f[1]],
+                                                   mesh_.vertices[f[2]]),
+                         p);
+      if (dot(d, d) <= radius2) return true;
+    }
+    return false;
+  }
+  const double dl = box_distance2(p, nodes_[node.left].lo, nodes_[node.left].hi);
+  const double dr = box_distance2(p, nodes_[node.right].lo, nodes_[node.right].hi);
+  const int near = dl <= dr ? node.left : node.right, far = dl <= dr ? node.right : node.left;
+  return (std::min(dl, dr) <= radius2 && any_within(near, p, radius2)) ||
+         (std::max(dl, dr) <= radius2 && any_within(far, p, radius2));
+}
+
+bool TriangleTree::within(const Vec3& p, double radius) const {
+  return !nodes_.empty() && any_within(0, p, radius * radius);
+}
+
 }  // namespace bimdf::detail

@@ -51,6 +51,36 @@ double corner_spread(const QuadMesh& mesh, const std::array<int, 4>& q) {
   return longest > 0 ? shortest / longest : 0;
 }
 
+QuadShape quad_shape(const QuadMesh& mesh, const std::array<int, 4>& q, const Vec3& normal) {
+  const Vec3* p[4] = {&mesh.vertices[q[0]], &mesh.vertices[q[1]], &mesh.vertices[q[2]],
+                      &mesh.vertices[q[3]]};
+  const Vec3 newell = newell_normal(mesh, q);
+  const double nn = std::sqrt(dot(newell, newell));
+  const Vec3 n = nn > 0 ? Vec3{newell[0] / nn, newell[1] / nn, newell[2] / nn} : Vec3{0, 0, 0};
+  Vec3 edge[4];  // edge[a] = p[a + 1] − p[a]
+  double length2[4];
+  for (int a = 0; a < 4; ++a) {
+    edge[a] = sub(*p[(a + 1) % 4], *p[a]);
+    length2[a] = dot(edge[a], edge[a]);
+  }
+  QuadShape shape{1, 1, 0};
+  for (int a = 0; a < 4; ++a) {
+    const int previous = (a + 3) % 4;
+    // Corner a: e1 = edge[a], e2 = −edge[previous].
+    const Vec3 e2 = {-edge[previous][0], -edge[previous][1], -edge[previous][2]};
+    const Vec3 x = cross(edge[a], e2);
+    const double l = std::sqrt(length2[a] * length2[previous]);
+    shape.own = std::min(shape.own, nn > 0 && l > 0 ? dot(x, n) / l : 0.0);
+    shape.under = std::min(shape.under, l > 0 ? dot(x, normal) / l : 0.0);
+  }
+  const double diagonal2 = std::min(dot(sub(*p[2], *p[0]), sub(*p[2], *p[0])),
+                                    dot(sub(*p[3], *p[1]), sub(*p[3], *p[1])));
+  const double shortest2 = std::min({length2[0], length2[1], length2[2], length2[3], diagonal2});
+  const double longest2 = std::max({length2[0], length2[1], length2[2], length2[3]});
+  shape.spread = longest2 > 0 ? std::sqrt(shortest2 / longest2) : 0;
+  return shape;
+}
+
 bool degenerate(const QuadMesh& mesh, const std::array<int, 4>& q) {
   return corner_spread(mesh, q) < kDegenerateSpread || scaled_jacobian(mesh, q) == 0;
 }

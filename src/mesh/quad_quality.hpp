@@ -24,6 +24,15 @@ double scaled_jacobian(const QuadMesh& mesh, const std::array<int, 4>& quad,
 // sees angles, which stay finite (and meaningless) as an edge shrinks to nothing.
 double corner_spread(const QuadMesh& mesh, const std::array<int, 4>& quad);
 
+// The three measures above at once, for smoothing, which rates every candidate position by
+// them: own = scaled_jacobian(mesh, quad), under = scaled_jacobian(mesh, quad, normal),
+// spread = corner_spread(mesh, quad). One pass shares the edge vectors and cross products.
+struct QuadShape {
+  double own, under, spread;
+};
+QuadShape quad_shape(const QuadMesh& mesh, const std::array<int, 4>& quad,
+                     const std::array<double, 3>& normal);
+
 // Degenerate (metrics.hpp): a scaled Jacobian of exactly 0, or two corners closer than
 // kDegenerateSpread of the longest edge — at that ratio the corner angles are rounding noise.
 constexpr double kDegenerateSpread = 1e-6;

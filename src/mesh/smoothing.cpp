@@ -18,6 +18,7 @@
 #include "bimdf/quant/tessellate.hpp"
 #include "mesh/closest_point.hpp"
 #include "mesh/quad_quality.hpp"
+#include "mesh/quality_polish.hpp"
 #include "mesh/untangle.hpp"
 #include "mesh/vec3.hpp"
 
@@ -35,36 +36,6 @@ constexpr double kShortEdge = 0.01;
 constexpr int kUntangleRounds = 50;
 constexpr double kUntangleDelta = 0.05;
 constexpr int kNewtonSteps = 5;
-
-// An orthonormal frame (t1, t2) of the plane of the quads `quads` at a vertex (their summed
-// Newell normal), or nothing when that normal vanishes.
-std::optional<std::array<detail::Vec3, 2>> tangent_frame(const QuadMesh& mesh,
-                                                         const std::vector<int>& quads) {
-  detail::Vec3 sum{0, 0, 0};
-  for (int f : quads) {
-    const detail::Vec3 q = detail::newell_normal(mesh, mesh.quads[f]);
-    for (int d = 0; d < 3; ++d) sum[d] += q[d];
-  }
-  const detail::Vec3 n = detail::normalized(sum);
-  if (detail::norm(n) == 0) return std::nullopt;
-  // t1: the axis least aligned with n, made orthogonal; t2 = n × t1.
-  detail::Vec3 t1{0, 0, 0};
-  const int axis = std::abs(n[0]) < std::abs(n[1]) ? (std::abs(n[0]) < std::abs(n[2]) ? 0 : 2)
-                                                   : (std::abs(n[1]) < std::abs(n[2]) ? 1 : 2);
-  t1[axis] = 1;
-  for (int d = 0; d < 3; ++d) t1[d] -= n[axis] * n[d];
-  t1 = detail::normalized(t1);
-  return std::array<detail::Vec3, 2>{t1, detail::cross(n, t1)};
-}
-
-// The mean distance from `at` to `neighbours`.
-double mean_distance(const QuadMesh& mesh, const std::vector<int>& neighbours,
-                     const detail::Vec3& at) {
-  double length = 0;
-  for (int w : neighbours)
-    length += detail::norm(detail::sub(mesh.vertices[w], at)) / neighbours.size();
-  return length;
-}
 
 // Points around `at` in the tangent plane `frame`: 8 directions, 4 distances relative to
 // `length`.
@@ -158,6 +129,7 @@ struct SurfaceSmoother::Setup {
   std::vector<std::vector<int>> neighbours;
   std::vector<std::vector<int>> vertex_quads;
   std::vector<std::unique_ptr<detail::TriangleTree>> trees;  // per chart, built on first use
+  std::unique_ptr<detail::TriangleTree> surface;  // all of layout.mesh, built on first use
   // Per triangle corner of layout.mesh: the area-weighted normal of the triangles of the same
   // chart at that vertex, built on first use (see surface_normal).
   std::vector<std::array<detail::Vec3, 3>> corner_normals;
@@ -165,7 +137,7 @@ struct SurfaceSmoother::Setup {
 
 SurfaceSmoother::SurfaceSmoother(const Layout& layout, Tessellation& t,
                                  const std::vector<std::vector<int>>* vertex_charts)
-    : setup_(std::make_unique<Setup>(Setup{layout, t, {}, {}, {}, {}, {}, {}, {}, {}})) {
+    : setup_(std::make_unique<Setup>(Setup{layout, t, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
   const QuadMesh& mesh = t.mesh;
   const int nv = mesh.num_vertices();
   std::set<std::pair<int, int>> feature;
@@ -267,14 +239,26 @@ SurfaceSmoother::SurfaceSmoother(const Layout& layout, Tessellation& t,
 
 SurfaceSmoother::~SurfaceSmoother() = default;
 
-void SurfaceSmoother::run(const SmoothingOptions& options) { run(options, nullptr); }
-
-void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int>& vertices) {
-  run(options, &vertices);
+void SurfaceSmoother::run(const SmoothingOptions& options) {
+  run(options, nullptr, Phase::kRelaxAndUntangle);
 }
 
-void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int>* only) {
-  if (options.iterations <= 0) return;
+void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int>& vertices) {
+  run(options, &vertices, Phase::kRelaxAndUntangle);
+}
+
+void SurfaceSmoother::polish(const SmoothingOptions& options) {
+  run(options, nullptr, Phase::kPolish);
+}
+
+void SurfaceSmoother::polish(const SmoothingOptions& options, const std::vector<int>& vertices) {
+  run(options, &vertices, Phase::kPolish);
+}
+
+void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int>* only,
+                          Phase phase) {
+  if ((phase == Phase::kRelaxAndUntangle ? options.iterations : options.quality_rounds) <= 0)
+    return;
   Setup& s = *setup_;
   const Layout& layout = s.layout;
   QuadMesh& mesh = s.t.mesh;
@@ -357,18 +341,18 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     int turned = 0;
     double worst = 1;
     double turned_amount = 0;  // Σ over turned quads of −(their worse scaled Jacobian)
+    double own_worst = 1;      // the worst scaled Jacobian against the quads' own normals
   };
   const auto rate = [&](int v) {
     Rating r;
     for (int f : vertex_quads[v]) {
       const std::array<int, 4>& q = mesh.quads[f];
-      const double spread = detail::corner_spread(mesh, q);
+      const auto [own, under, spread] = detail::quad_shape(mesh, q, up[f]);
       if (spread < kShortEdge) r.quality = std::min(r.quality, spread / kShortEdge - 1);
-      const double own = detail::scaled_jacobian(mesh, q);
-      const double under = detail::scaled_jacobian(mesh, q, up[f]);
       r.turned += own < 0 || under < 0;
       r.turned_amount += std::max(0.0, -std::min(own, under));
       r.worst = std::min({r.worst, own, under});
+      r.own_worst = std::min(r.own_worst, own);
     }
     r.quality = std::min(r.quality, r.worst);
     return r;
@@ -398,9 +382,9 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   // there.
   const auto search_positions = [&](int v) {
     std::vector<detail::Vec3> positions;
-    const auto frame = tangent_frame(mesh, vertex_quads[v]);
+    const auto frame = detail::tangent_frame(mesh, vertex_quads[v]);
     const detail::Vec3 at = mesh.vertices[v];
-    const double length = mean_distance(mesh, neighbours[v], at);
+    const double length = detail::mean_distance(mesh, neighbours[v], at);
     if (!frame || length == 0) return positions;
     positions = tangent_probes(*frame, at, length);
     if (const auto p = detail::max_min_corner_position(mesh, v, vertex_quads[v], up, (*frame)[0],
@@ -450,6 +434,19 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     }
     mesh.vertices[v] = chosen_quality >= std::min(before, kGoodEnough) ? chosen : old;
   };
+  if (phase == Phase::kPolish) {
+    if (!s.surface) s.surface = std::make_unique<detail::TriangleTree>(layout.mesh);
+    const auto rating = [&](int v) {
+      const Rating r = rate(v);
+      return detail::PolishInput::Rating{r.quality, r.own_worst, r.turned};
+    };
+    const auto on_curve = [&](int v) { return curve[v] >= 0; };
+    const detail::PolishInput polish{mesh,    vertex_quads, neighbours, *s.surface,
+                                     movable, project,      on_curve,   rating};
+    detail::polish_quality(polish, active, options.quality_rounds);
+    return;
+  }
+
   for (int iteration = 0; iteration < options.iterations; ++iteration)
     for (int v : active) relax(v);
 
@@ -458,9 +455,8 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   // max-min quality above, the sum lets a vertex give up some quality of one quad to make
   // room for a neighbour, which frees clusters of vertices that block each other.
   const auto inverted = [&](int f) {
-    return detail::corner_spread(mesh, mesh.quads[f]) < kShortEdge ||
-           detail::scaled_jacobian(mesh, mesh.quads[f]) < 0 ||
-           detail::scaled_jacobian(mesh, mesh.quads[f], up[f]) < 0;
+    const auto [own, under, spread] = detail::quad_shape(mesh, mesh.quads[f], up[f]);
+    return spread < kShortEdge || own < 0 || under < 0;
   };
   const auto inverted_at = [&](int v) {
     int count = 0;
@@ -509,10 +505,10 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       }
       // From the best sample, Newton steps on the energy.
       mesh.vertices[v] = chosen;
-      if (const auto frame = tangent_frame(mesh, vertex_quads[v])) {
+      if (const auto frame = detail::tangent_frame(mesh, vertex_quads[v])) {
         const detail::Vec3 p = detail::descend_in_tangent_plane(
             allowed_energy, chosen, (*frame)[0], (*frame)[1],
-            mean_distance(mesh, neighbours[v], chosen), kNewtonSteps);
+            detail::mean_distance(mesh, neighbours[v], chosen), kNewtonSteps);
         const double e = allowed_energy(p);
         if (e < lowest) lowest = e, chosen = mesh.vertices[v];
       }
@@ -522,7 +518,10 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
 }
 
 void smooth_on_surface(const Layout& layout, Tessellation& t, const SmoothingOptions& options) {
-  if (options.iterations > 0) SurfaceSmoother(layout, t).run(options);
+  if (options.iterations <= 0 && options.quality_rounds <= 0) return;
+  SurfaceSmoother smoother(layout, t);
+  smoother.run(options);
+  smoother.polish(options);
 }
 
 }  // namespace bimdf::quant

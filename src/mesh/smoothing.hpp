@@ -23,15 +23,22 @@ class SurfaceSmoother {
                   const std::vector<std::vector<int>>* vertex_charts = nullptr);
   ~SurfaceSmoother();
 
-  // smooth_on_surface: every vertex may move.
+  // Relaxation and untangling (`options.iterations` rounds): every vertex may move.
   void run(const SmoothingOptions& options);
   // The same restricted to the quad mesh vertices `vertices`: the others stay where they are.
   void run(const SmoothingOptions& options, const std::vector<int>& vertices);
 
+  // Quality polishing (`options.quality_rounds` rounds, quality_polish.hpp), meant as the last
+  // step, after every run: moving vertices before a tangled chart's retries changes where
+  // those start.
+  void polish(const SmoothingOptions& options);
+  void polish(const SmoothingOptions& options, const std::vector<int>& vertices);
+
  private:
   struct Setup;
   std::unique_ptr<Setup> setup_;
-  void run(const SmoothingOptions& options, const std::vector<int>* only);
+  enum class Phase { kRelaxAndUntangle, kPolish };
+  void run(const SmoothingOptions& options, const std::vector<int>* only, Phase phase);
 };
 
 }  // namespace bimdf::quant

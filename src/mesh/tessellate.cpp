@@ -141,12 +141,16 @@ Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& length
     globals[c] = std::move(global);
   }
   start = std::chrono::steady_clock::now();
-  if (smoothing.iterations > 0) {
+  if (smoothing.iterations > 0 || smoothing.quality_rounds > 0) {
     SurfaceSmoother smoother(layout, result);
     smoother.run(smoothing);
-    retry_tangled_charts(layout, lengths, patterns, globals, smoothing, smoother, result);
+    if (smoothing.iterations > 0)
+      retry_tangled_charts(layout, lengths, patterns, globals, smoothing, smoother, result);
+    result.time_smoothing_s = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    smoother.polish(smoothing);
+    result.time_polish_s = seconds_since(start);
   }
-  result.time_smoothing_s = seconds_since(start);
   return result;
 }
 

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
+#include "mesh/quad_quality.hpp"
 #include "mesh/vec3.hpp"
 
 namespace bimdf::detail {
@@ -21,6 +23,31 @@ struct Linear {
 };
 
 }  // namespace
+
+std::optional<std::array<Vec3, 2>> tangent_frame(const QuadMesh& mesh,
+                                                 const std::vector<int>& quads) {
+  Vec3 sum{0, 0, 0};
+  for (int f : quads) {
+    const Vec3 q = newell_normal(mesh, mesh.quads[f]);
+    for (int d = 0; d < 3; ++d) sum[d] += q[d];
+  }
+  const Vec3 n = normalized(sum);
+  if (norm(n) == 0) return std::nullopt;
+  // t1: the axis least aligned with n, made orthogonal; t2 = n × t1.
+  Vec3 t1{0, 0, 0};
+  const int axis = std::abs(n[0]) < std::abs(n[1]) ? (std::abs(n[0]) < std::abs(n[2]) ? 0 : 2)
+                                                   : (std::abs(n[1]) < std::abs(n[2]) ? 1 : 2);
+  t1[axis] = 1;
+  for (int d = 0; d < 3; ++d) t1[d] -= n[axis] * n[d];
+  t1 = normalized(t1);
+  return std::array<Vec3, 2>{t1, cross(n, t1)};
+}
+
+double mean_distance(const QuadMesh& mesh, const std::vector<int>& neighbours, const Vec3& at) {
+  double length = 0;
+  for (int w : neighbours) length += norm(sub(mesh.vertices[w], at)) / neighbours.size();
+  return length;
+}
 
 std::optional<std::array<double, 3>> max_min_corner_position(
     const QuadMesh& mesh, int v, const std::vector<int>& quads,

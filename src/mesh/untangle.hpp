@@ -16,6 +16,15 @@
 
 namespace bimdf::detail {
 
+// An orthonormal frame (t1, t2) of the plane of the quads `quads` at a vertex (their summed
+// Newell normal), or nothing when that normal vanishes.
+std::optional<std::array<std::array<double, 3>, 2>> tangent_frame(const QuadMesh& mesh,
+                                                                  const std::vector<int>& quads);
+
+// The mean distance from `at` to the vertices `neighbours`: the scale of a vertex's moves.
+double mean_distance(const QuadMesh& mesh, const std::vector<int>& neighbours,
+                     const std::array<double, 3>& at);
+
 // Among the points p = at + x·t1 + y·t2 with x² + y² ≤ radius² (t1, t2 orthonormal), the one
 // at which the smallest signed corner area of the quads `quads` of `mesh` (all containing
 // vertex `v`; quad f's corners signed by `normals[f]`, each divided by the product of its

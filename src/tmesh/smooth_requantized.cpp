@@ -191,7 +191,7 @@ void smooth_requantized(const QuadMesh& input, const TMesh& tmesh, const TMeshIn
                         const std::vector<std::array<int, 2>>& feature_edges,
                         const std::vector<int>& feature_corners, CollapsedMesh& result,
                         const quant::SmoothingOptions& options) {
-  if (options.iterations <= 0 || !has_geometry(tmesh)) return;
+  if ((options.iterations <= 0 && options.quality_rounds <= 0) || !has_geometry(tmesh)) return;
   const quant::Layout layout =
       requantization_layout(input, tmesh, incidence, feature_edges, feature_corners);
   // Curves are what SurfaceSmoother slides along: border subsides and those on features.
@@ -256,6 +256,7 @@ void smooth_requantized(const QuadMesh& input, const TMesh& tmesh, const TMeshIn
   {
     quant::SurfaceSmoother smoother(layout, t, &vertex_charts);
     smoother.run(options, moving);
+    smoother.polish(options, moving);
   }
   result.mesh = std::move(t.mesh);
 }

@@ -91,7 +91,7 @@ struct Remeshed {
 Remeshed remesh(const Layout& layout) {
   Remeshed r;
   r.quantization = quantize(layout, QuantizeOptions{});
-  r.raw = tessellate(layout, r.quantization.lengths(), SmoothingOptions{0, 0.5});
+  r.raw = tessellate(layout, r.quantization.lengths(), SmoothingOptions{0, 0.5, 0});
   r.smoothed = tessellate(layout, r.quantization.lengths());
   return r;
 }
@@ -231,7 +231,7 @@ TEST(Remesh, SmoothingUntanglesAFoldedChart) {
   const Layout layout =
       read_quadwild_layout(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj");
   const std::vector<int64_t> lengths = quantize(layout, QuantizeOptions{}).lengths();
-  Tessellation t = tessellate(layout, lengths, SmoothingOptions{0, 0.5});
+  Tessellation t = tessellate(layout, lengths, SmoothingOptions{0, 0.5, 0});
   std::vector<std::vector<int>> interior(layout.charts.size());
   for (int v = 0; v < t.mesh.num_vertices(); ++v)
     if (t.origin[v].chart >= 0) interior[t.origin[v].chart].push_back(v);

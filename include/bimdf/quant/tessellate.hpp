@@ -40,7 +40,8 @@ struct Tessellation {
   std::vector<ChartTiling> charts;   // by chart id; empty charts get 0 quads
   double time_patterns_s = 0;        // building the patterns
   double time_mapping_s = 0;         // flattening charts and placing vertices
-  double time_smoothing_s = 0;
+  double time_smoothing_s = 0;       // relaxation, untangling and tangled charts' retries
+  double time_polish_s = 0;          // quality polishing (SmoothingOptions::quality_rounds)
 };
 
 // Smoothing after stitching (note §4.2): `iterations` rounds in which every free vertex moves
@@ -54,9 +55,15 @@ struct Tessellation {
 // coincide; vertices with a quad below 0.2 also try sampled positions in their tangent plane
 // and the position that maximizes their smallest corner area (untangle.hpp). 0 iterations:
 // no smoothing.
+//
+// Then `quality_rounds` rounds of quality polishing (src/mesh/quality_polish.hpp): each vertex
+// moves to where the corners of its quads are closest to right angles, never lowering its
+// worst quad, turning a quad over or moving the mesh farther from the input surface. It raises
+// the mean and 5th-percentile scaled Jacobian; 0: none.
 struct SmoothingOptions {
   int iterations = 30;
   double damping = 0.5;
+  int quality_rounds = 5;
 };
 
 // Tessellates `layout` with subside lengths `lengths` (one per subside, as quantize returns).
