@@ -18,12 +18,19 @@ namespace {
 
 using nlohmann::json;
 
+void add_compare_option(CLI::App* cmd, std::string& compare) {
+  cmd->add_option("--compare", compare,
+                  "Another quad mesh of the same surface (e.g. QuadWild's, OBJ): its metrics "
+                  "side by side with this one's, against the same reference");
+}
+
 void add_mesh_output(CLI::App* cmd, RemeshCommandOptions& o) {
   cmd->add_option("-o,--output", o.mesh_out, "The quad mesh OBJ to write (one group per patch)")
       ->required();
   cmd->add_flag("--json", o.quantize.out.json, "Print the report as JSON on stdout");
   cmd->add_option("--report", o.quantize.out.file, "Also write the report JSON to this file");
   cmd->add_flag("-v,--verbose", o.verbose, "Per-chart pattern details");
+  add_compare_option(cmd, o.compare);
   add_smoothing_options(cmd, o.smoothing);
 }
 
@@ -202,6 +209,43 @@ TessellationReport report_metrics(const QuadMeshMetrics& m) {
   return r;
 }
 
+// `other_path`'s metrics (against the same `reference`, if any) beside `ours`: returns the
+// report's "compare" object {"mesh", "metrics"} and appends a two-column table to `text`.
+json compare_with(const QuadMeshMetrics& ours, const std::string& other_path,
+                  const TriangleMesh* reference, std::string& text) {
+  const QuadMesh other = read_obj_quads(other_path);
+  if (other.quads.empty())
+    throw InputError(other_path, "", "no faces: expected an OBJ quad mesh to compare with");
+  const QuadMeshMetrics theirs = measure_quad_mesh(other, reference);
+  std::ostringstream s;
+  const auto row = [&](const char* label, const std::string& a, const std::string& b) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%-14s%-16s%s\n", label, a.c_str(), b.c_str());
+    s << line;
+  };
+  const auto fixed = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4f", v);
+    return std::string(buf);
+  };
+  row("compared", "this mesh", other_path);
+  row("quads", std::to_string(ours.faces), std::to_string(theirs.faces));
+  row("singular", std::to_string(ours.singular_vertices()),
+      std::to_string(theirs.singular_vertices()));
+  row("SJ min", fixed(ours.scaled_jacobian_min), fixed(theirs.scaled_jacobian_min));
+  row("SJ mean", fixed(ours.scaled_jacobian_mean), fixed(theirs.scaled_jacobian_mean));
+  row("SJ p5", fixed(ours.scaled_jacobian_p5), fixed(theirs.scaled_jacobian_p5));
+  row("inverted", std::to_string(ours.inverted), std::to_string(theirs.inverted));
+  row("degenerate", std::to_string(ours.degenerate), std::to_string(theirs.degenerate));
+  row("base complex", std::to_string(ours.base_complex_faces),
+      std::to_string(theirs.base_complex_faces));
+  if (reference)
+    row("Hausdorff %", fixed(100 * ours.hausdorff_relative),
+        fixed(100 * theirs.hausdorff_relative));
+  text += s.str();
+  return {{"mesh", other_path}, {"metrics", report_metrics(theirs).j}};
+}
+
 CLI::App* add_remesh_command(CLI::App& app, RemeshCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "remesh", "Quantize a QuadWild patch layout and tessellate it into a quad mesh");
@@ -228,6 +272,7 @@ CLI::App* add_metrics_command(CLI::App& app, MetricsCommandOptions& o) {
   cmd->add_option("--reference", o.reference,
                   "The surface it should follow (triangle OBJ): adds the Hausdorff distance and "
                   "faces facing away");
+  add_compare_option(cmd, o.compare);
   add_output_options(cmd, o.out);
   return cmd;
 }
@@ -237,12 +282,15 @@ int run_metrics(const MetricsCommandOptions& o) {
   if (mesh.quads.empty()) throw InputError(o.mesh, "", "no faces: expected an OBJ quad mesh");
   TriangleMesh reference;
   if (!o.reference.empty()) reference = read_obj_triangles(o.reference);
-  const QuadMeshMetrics m = measure_quad_mesh(mesh, o.reference.empty() ? nullptr : &reference);
+  const TriangleMesh* against = o.reference.empty() ? nullptr : &reference;
+  const QuadMeshMetrics m = measure_quad_mesh(mesh, against);
   TessellationReport r = report_metrics(m);
+  if (!o.compare.empty()) r.j["compare"] = compare_with(m, o.compare, against, r.text);
   r.j["mesh"] = o.mesh;
   if (!o.reference.empty()) r.j["reference"] = o.reference;
   std::vector<std::string> inputs{o.mesh};
   if (!o.reference.empty()) inputs.push_back(o.reference);
+  if (!o.compare.empty()) inputs.push_back(o.compare);
   deliver(o.out, r.text, r.j.dump(1) + "\n", inputs);
   return kOk;
 }
@@ -259,8 +307,10 @@ int run_remesh(const RemeshCommandOptions& o) {
   const QuantizationReport qr = report_quantization(layout, q, o.quantize, read_s, quantized_s);
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
   const auto measuring = std::chrono::steady_clock::now();
-  const TessellationReport mr = report_metrics(measure_quad_mesh(t.mesh, &layout.mesh));
+  const QuadMeshMetrics metrics = measure_quad_mesh(t.mesh, &layout.mesh);
+  TessellationReport mr = report_metrics(metrics);
   json j = tr.j;
+  if (!o.compare.empty()) j["compare"] = compare_with(metrics, o.compare, &layout.mesh, mr.text);
   j["quantization"] = qr.json;
   j["metrics"] = mr.j;
   j["time"]["read_s"] = read_s;
@@ -269,7 +319,9 @@ int run_remesh(const RemeshCommandOptions& o) {
   j["time"]["total_s"] = seconds_since(start);
   tr.text += mr.text + "total time    " + ms(seconds_since(start)) + "\n";
   for (const std::string& w : layout.warnings) std::cerr << "warning: " << w << "\n";
-  deliver(o.quantize.out, qr.text + tr.text, j.dump(1) + "\n", {o.quantize.layout});
+  std::vector<std::string> inputs{o.quantize.layout};
+  if (!o.compare.empty()) inputs.push_back(o.compare);
+  deliver(o.quantize.out, qr.text + tr.text, j.dump(1) + "\n", inputs);
   return kOk;
 }
 
@@ -285,12 +337,16 @@ int run_tessellate(const RemeshCommandOptions& o) {
   }
   write_mesh(t, o, {o.quantize.layout, o.quantization});
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
-  const TessellationReport mr = report_metrics(measure_quad_mesh(t.mesh, &layout.mesh));
+  const QuadMeshMetrics metrics = measure_quad_mesh(t.mesh, &layout.mesh);
+  TessellationReport mr = report_metrics(metrics);
+  if (!o.compare.empty()) tr.j["compare"] = compare_with(metrics, o.compare, &layout.mesh, mr.text);
   tr.j["metrics"] = mr.j;
   tr.text += mr.text;
   tr.j["time"]["total_s"] = seconds_since(start);
   for (const std::string& w : layout.warnings) std::cerr << "warning: " << w << "\n";
-  deliver(o.quantize.out, tr.text, tr.j.dump(1) + "\n", {o.quantize.layout, o.quantization});
+  std::vector<std::string> inputs{o.quantize.layout, o.quantization};
+  if (!o.compare.empty()) inputs.push_back(o.compare);
+  deliver(o.quantize.out, tr.text, tr.j.dump(1) + "\n", inputs);
   return kOk;
 }
 

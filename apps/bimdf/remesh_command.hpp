@@ -17,11 +17,13 @@ struct RemeshCommandOptions {
   std::string quantization;         // tessellate: the QUANT.json of `bimdf quantize`
   std::string mesh_out;             // -o OUT.obj
   quant::SmoothingOptions smoothing;
+  std::string compare;  // --compare OTHER.obj: its metrics beside the output's
   bool verbose = false;
 };
 
 struct MetricsCommandOptions {
   std::string mesh, reference;
+  std::string compare;  // --compare OTHER.obj
   OutputOptions out;
 };
 

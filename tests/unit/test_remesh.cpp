@@ -429,6 +429,45 @@ TEST(Render, DrawsTheMeshIntoAValidPng) {
 
 class RemeshCli : public testing::CliFixture {};
 
+// --compare: another mesh's metrics beside the output's, as `bimdf metrics` measures it alone
+// against the same reference; here the bunny remeshed without polishing beside the default.
+TEST_F(RemeshCli, CompareReportsTheOtherMeshAsMetricsDoes) {
+  const std::string layout = std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj";
+  ASSERT_EQ(run("remesh " + layout + " -o " + path("plain.obj") + " --quality-rounds 0").exit_code,
+            0);
+  testing::CliRun r = run("remesh " + layout + " -o " + path("polished.obj") +
+                          " --json --compare " + path("plain.obj"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(report.contains("compare"));
+  EXPECT_EQ(report["compare"]["mesh"], path("plain.obj"));
+  const nlohmann::json other = report["compare"]["metrics"];
+
+  r = run("metrics " + path("plain.obj") + " --reference " + layout + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json alone = nlohmann::json::parse(r.out);
+  alone.erase("mesh");
+  alone.erase("reference");
+  EXPECT_EQ(other, alone);
+  // Polishing is what differs: a better mean and 5th percentile, the same quads.
+  EXPECT_EQ(report["metrics"]["faces"], other["faces"]);
+  EXPECT_GT(report["metrics"]["scaled_jacobian"]["p5"].get<double>(),
+            other["scaled_jacobian"]["p5"].get<double>());
+
+  r = run("metrics " + path("polished.obj") + " --compare " + path("plain.obj"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("compared      this mesh       " + path("plain.obj") + "\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\nquads         5996            5996\n"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("Hausdorff %"), std::string::npos) << "no reference, no distance";
+
+  r = run("metrics " + path("polished.obj") + " --compare " + path("missing.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "error: " + path("missing.obj") + ": cannot open file: No such file or directory\n");
+}
+
 TEST_F(RemeshCli, TessellateReadsQuantizeOutputAndReportsBadLengths) {
   const std::string layout = std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj";
   ASSERT_EQ(run("quantize " + layout + " -o " + path("q.json")).exit_code, 0);
