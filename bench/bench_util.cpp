@@ -83,21 +83,6 @@ std::vector<LayoutReference> read_layout_references(const std::string& dir) {
   return refs;
 }
 
-std::map<std::string, QuadWildQuality> read_quadwild_quality(const std::string& dir) {
-  std::map<std::string, QuadWildQuality> rows;
-  std::ifstream tsv(std::filesystem::path(dir) / "quadwild_quality.tsv");
-  std::string line;
-  std::getline(tsv, line);  // header: mesh quads singular_interior msj_min msj_mean msj_p05 ...
-  while (std::getline(tsv, line)) {
-    std::istringstream row(line);
-    std::string mesh;
-    long long quads, singular;
-    QuadWildQuality q;
-    if (row >> mesh >> quads >> singular >> q.min >> q.mean >> q.p5 >> q.inverted) rows[mesh] = q;
-  }
-  return rows;
-}
-
 std::string fmt(double v, int precision) {
   if (std::isnan(v)) return "–";
   std::ostringstream s;

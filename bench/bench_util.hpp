@@ -37,14 +37,6 @@ struct LayoutReference {
 };
 std::vector<LayoutReference> read_layout_references(const std::string& dir);
 
-// One row of a shared layouts folder's quadwild_quality.tsv: QuadWild's final mesh measured
-// with our metric (min-of-four-corners scaled Jacobian), keyed by mesh name; empty without it.
-struct QuadWildQuality {
-  double min = 0, mean = 0, p5 = 0;
-  int inverted = 0;
-};
-std::map<std::string, QuadWildQuality> read_quadwild_quality(const std::string& dir);
-
 // Fixed-point text, "–" for NaN.
 std::string fmt(double v, int precision = 3);
 

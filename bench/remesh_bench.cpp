@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "bench_util.hpp"
+#include "quadwild_quality.hpp"
 
 namespace bimdf::bench {
 
@@ -72,17 +73,13 @@ std::string benchmark_remesh(const std::string& cli, const std::string& dir, int
     worst_hausdorff = std::max(worst_hausdorff, m["hausdorff_relative"].get<double>());
     total_s += t["total_s"].get<double>();
     const auto ms = [&](const char* key) { return fmt(t[key].get<double>() * 1e3, 1); };
-    // QuadWild's figures have 4 digits: ours count as at least as good when they are at
-    // least as large at that precision (minimum: as large, or above 0.2 — issue 24's rule).
+    // At least as good: at QuadWild's 4 digits (quadwild_quality.hpp).
     std::string quadwild_cell = "–";
     if (const auto it = quadwild.find(mesh); it != quadwild.end()) {
       const QuadWildQuality& qw = it->second;
       const auto& sj = m["scaled_jacobian"];
-      const auto at_least = [](double ours, double theirs) { return ours >= theirs - 5e-5; };
-      const double min = sj["min"].get<double>();
-      const bool above = at_least(sj["mean"].get<double>(), qw.mean) &&
-                         at_least(sj["p5"].get<double>(), qw.p5) &&
-                         (at_least(min, qw.min) || min > 0.2);
+      const bool above = at_least_quadwild(sj["min"].get<double>(), sj["mean"].get<double>(),
+                                           sj["p5"].get<double>(), qw);
       ++compared;
       above_quadwild += above;
       quadwild_cell = fmt(qw.min, 4) + " / " + fmt(qw.mean, 4) + " / " + fmt(qw.p5, 4) +

@@ -20,6 +20,7 @@
 #include "bimdf/render.hpp"
 #include "cli_fixture.hpp"
 #include "mesh/quad_quality.hpp"
+#include "quadwild_quality.hpp"
 #include "shared_layouts.hpp"
 #include "test_helpers.hpp"
 
@@ -206,10 +207,15 @@ void expect_inverted_quads_forced(const Layout& layout, const Tessellation& t,
   }
 }
 
+// ... and as good as QuadWild's final meshes by the scaled Jacobian (quadwild_quality.tsv:
+// mean and p5 at its 4 digits, minimum too or above 0.2; issue 24).
 TEST(RemeshShared, EveryLayoutBecomesAConformingQuadMeshOfTheReferenceSize) {
   REQUIRE_SHARED_LAYOUTS();
   const std::vector<testing::Reference> refs = testing::references();
   ASSERT_EQ(refs.size(), 23u);
+  const std::map<std::string, bench::QuadWildQuality> quadwild =
+      bench::read_quadwild_quality(testing::kLayouts);
+  ASSERT_EQ(quadwild.size(), 23u);
   // Every layout in the plain run; an evenly spread subset in the (slow) sanitizer run.
   const size_t stride = refs.size() / std::max<size_t>(1, testing::scaled(23));
   for (size_t i = 0; i < refs.size(); i += std::max<size_t>(1, stride)) {
@@ -220,6 +226,13 @@ TEST(RemeshShared, EveryLayoutBecomesAConformingQuadMeshOfTheReferenceSize) {
     expect_inverted_quads_forced(layout, r.smoothed, ref.mesh);
     EXPECT_NEAR(r.smoothed.mesh.num_quads(), ref.align_quads, 0.1 * ref.align_quads) << ref.mesh;
     for (const ChartTiling& c : r.smoothed.charts) EXPECT_NE(c.kind, PatternKind::Fan) << ref.mesh;
+    const QuadMeshMetrics m = measure_quad_mesh(r.smoothed.mesh);
+    const bench::QuadWildQuality& qw = quadwild.at(ref.mesh);
+    EXPECT_TRUE(bench::at_least_quadwild(m.scaled_jacobian_min, m.scaled_jacobian_mean,
+                                         m.scaled_jacobian_p5, qw))
+        << ref.mesh << ": ours " << m.scaled_jacobian_min << " / " << m.scaled_jacobian_mean
+        << " / " << m.scaled_jacobian_p5 << ", QuadWild " << qw.min << " / " << qw.mean << " / "
+        << qw.p5;
   }
 }
 
