@@ -59,6 +59,16 @@ def test_remesh_equals_the_cli_mesh(bunny_remeshed):
         cli_report["quantization"]["objective"], rel=1e-12)
 
 
+def test_remesh_without_polishing_equals_the_cli(tmp_path):
+    out = tmp_path / "plain.obj"
+    run_cli("remesh", BUNNY_LAYOUT, "-o", out, "--quality-rounds", "0")
+    V, F, report = bimdf.remesh(str(BUNNY_LAYOUT), quality_rounds=0)
+    V_cli, F_cli = bimdf.read_obj(str(out))
+    np.testing.assert_array_equal(F, F_cli)
+    np.testing.assert_array_equal(V, V_cli)
+    assert report["time"]["polish_s"] < 1e-3  # nothing to do but return
+
+
 def test_quantize_equals_the_cli_and_layouts_from_arrays_equal_files(tmp_path):
     cli = json.loads(run_cli("quantize", BUNNY_LAYOUT, "--json").stdout)
     q = bimdf.quantize(str(BUNNY_LAYOUT))
@@ -127,6 +137,8 @@ def test_mesh_errors_are_the_documented_exceptions(tmp_path):
         bimdf.remesh(str(BUNNY_LAYOUT), scale=0.0)
     with pytest.raises(ValueError, match=r"^give at most one of scale, edge_length, target_faces$"):
         bimdf.remesh(str(BUNNY_LAYOUT), scale=2.0, target_faces=100)
+    with pytest.raises(ValueError, match=r"^quality_rounds must be >= 0$"):
+        bimdf.remesh(str(BUNNY_LAYOUT), quality_rounds=-1)
     with pytest.raises(FileNotFoundError, match="no such file"):
         bimdf.remesh(str(tmp_path / "missing.obj"))
     broken = tmp_path / "broken.obj"
