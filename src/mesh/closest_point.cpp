@@ -10,10 +10,6 @@
 namespace bimdf::detail {
 namespace {
 
-Vec3 along(const Vec3& a, const Vec3& d, double t) {
-  return {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]};
-}
-
 // Squared distance from p to the box [lo, hi].
 double box_distance2(const Vec3& p, const Vec3& lo, const Vec3& hi) {
   double d2 = 0;
@@ -51,15 +47,15 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
   const double d3 = dot(ab, bp), d4 = dot(ac, bp);
   if (d3 >= 0 && d4 <= d3) return b;
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return along(a, ab, d1 / (d1 - d3));
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return along(a, d1 / (d1 - d3), ab);
   const Vec3 cp = sub(p, c);
   const double d5 = dot(ab, cp), d6 = dot(ac, cp);
   if (d6 >= 0 && d5 <= d6) return c;
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return along(a, ac, d2 / (d2 - d6));
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return along(a, d2 / (d2 - d6), ac);
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-    return along(b, sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    return along(b, (d4 - d3) / ((d4 - d3) + (d5 - d6)), sub(c, b));
   const double denominator = va + vb + vc;
   if (denominator <= 0) return a;  // degenerate triangle: its vertices were checked above
   const double v = vb / denominator, w = vc / denominator;

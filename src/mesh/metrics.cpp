@@ -179,10 +179,7 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
       sample({(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2});
     }
     for (const auto& q : mesh.quads) {
-      Vec3 c{0, 0, 0};
-      for (int v : q)
-        for (int d = 0; d < 3; ++d) c[d] += mesh.vertices[v][d] / 4;
-      sample(c);
+      sample(detail::quad_centre(mesh, q));
       Vec3 normal{0, 0, 0};
       for (int v : q)
         for (int d = 0; d < 3; ++d) normal[d] += vertex_normal[v][d];

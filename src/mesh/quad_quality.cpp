@@ -7,6 +7,13 @@
 
 namespace bimdf::detail {
 
+Vec3 quad_centre(const QuadMesh& mesh, const std::array<int, 4>& q) {
+  Vec3 centre{0, 0, 0};
+  for (int v : q)
+    for (int d = 0; d < 3; ++d) centre[d] += mesh.vertices[v][d] / 4;
+  return centre;
+}
+
 Vec3 newell_normal(const QuadMesh& mesh, const std::array<int, 4>& q) {
   Vec3 n{0, 0, 0};
   for (int a = 0; a < 4; ++a) {

@@ -7,6 +7,9 @@
 
 namespace bimdf::detail {
 
+// The mean of the quad's four corners.
+std::array<double, 3> quad_centre(const QuadMesh& mesh, const std::array<int, 4>& quad);
+
 // Newell's normal of the quad (not normalized): robust for non-planar quads.
 std::array<double, 3> newell_normal(const QuadMesh& mesh, const std::array<int, 4>& quad);
 

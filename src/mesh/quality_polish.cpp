@@ -12,11 +12,6 @@
 namespace bimdf::detail {
 namespace {
 
-// a + t·d.
-Vec3 along(const Vec3& a, double t, const Vec3& d) {
-  return {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]};
-}
-
 Vec3 midpoint(const Vec3& a, const Vec3& b) { return along(a, 0.5, sub(b, a)); }
 
 // A move shorter than this fraction of the vertex's mean edge changes its neighbours' corners
@@ -35,10 +30,7 @@ std::vector<Vec3> hausdorff_samples(const QuadMesh& mesh, const std::vector<int>
     const std::array<int, 4>& q = mesh.quads[f];
     for (int a = 0; a < 4; ++a)
       samples.push_back(midpoint(mesh.vertices[q[a]], mesh.vertices[q[(a + 1) % 4]]));
-    Vec3 centre{0, 0, 0};
-    for (int a = 0; a < 4; ++a)
-      for (int d = 0; d < 3; ++d) centre[d] += mesh.vertices[q[a]][d] / 4;
-    samples.push_back(centre);
+    samples.push_back(quad_centre(mesh, q));
   }
   return samples;
 }
@@ -51,12 +43,7 @@ std::vector<Vec3> samples_moving_with(const QuadMesh& mesh, int v, const std::ve
   neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
   std::vector<Vec3> samples;
   for (int w : neighbours) samples.push_back(midpoint(mesh.vertices[v], mesh.vertices[w]));
-  for (int f : quads) {
-    Vec3 centre{0, 0, 0};
-    for (int u : mesh.quads[f])
-      for (int d = 0; d < 3; ++d) centre[d] += mesh.vertices[u][d] / 4;
-    samples.push_back(centre);
-  }
+  for (int f : quads) samples.push_back(quad_centre(mesh, mesh.quads[f]));
   return samples;
 }
 

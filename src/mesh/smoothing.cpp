@@ -314,9 +314,7 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   };
   std::vector<std::array<double, 3>> up(mesh.num_quads());
   for (int f : active_quads) {
-    std::array<double, 3> centre{0, 0, 0};
-    for (int v : mesh.quads[f])
-      for (int d = 0; d < 3; ++d) centre[d] += mesh.vertices[v][d] / 4;
+    const std::array<double, 3> centre = detail::quad_centre(mesh, mesh.quads[f]);
     const int c = f < static_cast<int>(mesh.quad_patch.size()) ? mesh.quad_patch[f] : -1;
     const detail::TriangleTree* under = tree(c);
     up[f] = detail::normalized(under ? surface_normal(under->closest(centre))

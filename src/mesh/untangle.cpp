@@ -11,11 +11,6 @@
 namespace bimdf::detail {
 namespace {
 
-// a + x·b (3-vectors).
-Vec3 along(const Vec3& a, double x, const Vec3& b) {
-  return {a[0] + x * b[0], a[1] + x * b[1], a[2] + x * b[2]};
-}
-
 // value(x, y) = c + gx·x + gy·y.
 struct Linear {
   double c, gx, gy;

@@ -17,6 +17,10 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+// a + t·d.
+inline Vec3 along(const Vec3& a, double t, const Vec3& d) {
+  return {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]};
+}
 // a / |a|, or zero for the zero vector.
 inline Vec3 normalized(const Vec3& a) {
   const double n = norm(a);
