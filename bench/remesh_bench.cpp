@@ -32,7 +32,7 @@ std::string benchmark_remesh(const std::string& cli, const std::string& dir, int
         "SJ: scaled Jacobian (inverted: < 0; degenerate: exactly 0). Hausdorff: to the input "
         "surface, % of its bounding-box diagonal. "
         "QuadWild: its final meshes as ../shared/data/layouts/quadwild_quality.tsv gives them "
-        "(4 digits; \"ours below\" where ours is lower at that precision). Times in ms: read + "
+        "(4 digits; \"ours below\" where ours is lower than that figure). Times in ms: read + "
         "quantize, patterns, mapping (flattening, placing), smoothing (relaxation, untangling, "
         "retries), polish, metrics, total.\n\n";
   md << "| layout | quads | reference quads | diff | patterns regular/cut/fan | singular "
@@ -73,7 +73,7 @@ std::string benchmark_remesh(const std::string& cli, const std::string& dir, int
     worst_hausdorff = std::max(worst_hausdorff, m["hausdorff_relative"].get<double>());
     total_s += t["total_s"].get<double>();
     const auto ms = [&](const char* key) { return fmt(t[key].get<double>() * 1e3, 1); };
-    // At least as good: at QuadWild's 4 digits (quadwild_quality.hpp).
+    // At least as good as QuadWild's figures (quadwild_quality.hpp).
     std::string quadwild_cell = "–";
     if (const auto it = quadwild.find(mesh); it != quadwild.end()) {
       const QuadWildQuality& qw = it->second;
@@ -106,7 +106,7 @@ std::string benchmark_remesh(const std::string& cli, const std::string& dir, int
      << degenerate << " degenerate, " << faces_away
      << " facing away from the surface; largest Hausdorff distance "
      << fmt(worst_hausdorff * 100, 3) << "% of the diagonal; total time " << fmt(total_s, 2)
-     << " s. Scaled Jacobian at least QuadWild's (mean and p5 to its 4 digits; min too, or above "
+     << " s. Scaled Jacobian at least QuadWild's 4-digit figures (mean and p5; min too, or above "
         "0.2) on "
      << above_quadwild << " of " << compared << " layouts.\n";
   return md.str();

@@ -115,7 +115,8 @@ TEST(QualityPolish, RaisesTheBunnysQualityWithinItsGuarantees) {
   const QuadMeshMetrics a = measure_quad_mesh(plain.mesh, &layout.mesh);
   const QuadMeshMetrics b = measure_quad_mesh(polished.mesh, &layout.mesh);
   EXPECT_GT(b.scaled_jacobian_mean, a.scaled_jacobian_mean + 0.005);
-  EXPECT_GT(b.scaled_jacobian_p5, a.scaled_jacobian_p5 + 0.03);
+  // +0.0997 measured (0.7735 → 0.8732); without the rounds over the worst tenth, +0.0925.
+  EXPECT_GT(b.scaled_jacobian_p5, a.scaled_jacobian_p5 + 0.095);
   EXPECT_GE(b.scaled_jacobian_min, a.scaled_jacobian_min);
   EXPECT_LE(b.hausdorff, a.hausdorff);
   EXPECT_LE(b.inverted, a.inverted);

@@ -208,7 +208,7 @@ void expect_inverted_quads_forced(const Layout& layout, const Tessellation& t,
 }
 
 // ... and as good as QuadWild's final meshes by the scaled Jacobian (quadwild_quality.tsv:
-// mean and p5 at its 4 digits, minimum too or above 0.2; issue 24).
+// mean and p5 at least its 4-digit figures, minimum too or above 0.2; issue 24).
 TEST(RemeshShared, EveryLayoutBecomesAConformingQuadMeshOfTheReferenceSize) {
   REQUIRE_SHARED_LAYOUTS();
   const std::vector<testing::Reference> refs = testing::references();

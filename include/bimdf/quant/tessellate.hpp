@@ -58,8 +58,9 @@ struct Tessellation {
 //
 // Then `quality_rounds` rounds of quality polishing (src/mesh/quality_polish.hpp): each vertex
 // moves to where the corners of its quads are closest to right angles, never lowering its
-// worst quad, turning a quad over or moving the mesh farther from the input surface. It raises
-// the mean and 5th-percentile scaled Jacobian; 0: none.
+// worst quad, turning a quad over or moving the mesh farther from the input surface; then as
+// many rounds again over the corners of the worst tenth of the quads. It raises the mean and
+// 5th-percentile scaled Jacobian; 0: none.
 struct SmoothingOptions {
   int iterations = 30;
   double damping = 0.5;
