@@ -98,28 +98,53 @@ std::vector<int> worst_tenth(const QuadMesh& mesh, const std::vector<int>& quads
   return worst;
 }
 
-double cubed_deficit(const QuadMesh& mesh, const std::array<int, 4>& q, int a, const Vec3& n) {
-  const Vec3& c = mesh.vertices[q[a]];
-  const Vec3 e1 = sub(mesh.vertices[q[(a + 1) % 4]], c);
-  const Vec3 e2 = sub(mesh.vertices[q[(a + 3) % 4]], c);
+// (1 − sin θ)³ of the corner between edges e1 and e2 (e2 follows e1 counter-clockwise about n).
+double cubed_deficit(const Vec3& e1, const Vec3& e2, const Vec3& n) {
   const double l = std::sqrt(dot(e1, e1) * dot(e2, e2));
   const double deficit = 1 - (l > 0 ? dot(cross(e1, e2), n) / l : -1);
   return deficit * deficit * deficit;
 }
 
-// corner_angle_energy with fixed unit normals (one per quad of `quads`) and only the corners
-// that move with vertex v: its own and its two neighbours' in each quad.
-double touching_corner_energy(const QuadMesh& mesh, const std::vector<int>& quads,
-                              const std::vector<Vec3>& normals, int v) {
-  double energy = 0;
-  for (size_t i = 0; i < quads.size(); ++i) {
-    const std::array<int, 4>& q = mesh.quads[quads[i]];
-    int k = 0;
-    while (q[k] != v) ++k;
-    for (int a : {k, (k + 1) % 4, (k + 3) % 4}) energy += cubed_deficit(mesh, q, a, normals[i]);
-  }
-  return energy;
+double cubed_deficit(const QuadMesh& mesh, const std::array<int, 4>& q, int a, const Vec3& n) {
+  const Vec3& c = mesh.vertices[q[a]];
+  return cubed_deficit(sub(mesh.vertices[q[(a + 1) % 4]], c), sub(mesh.vertices[q[(a + 3) % 4]], c),
+                       n);
 }
+
+// corner_angle_energy with fixed unit normals (one per quad of `quads`) and only the corners
+// that move with vertex v — its own and its two neighbours' in each quad — as a function of
+// v's position alone. Newton's steps evaluate it some twenty times per visit, so what does not
+// move with v (the edges from the neighbours to the opposite corners) is computed once.
+class MovingCornerEnergy {
+ public:
+  MovingCornerEnergy(const QuadMesh& mesh, const std::vector<int>& quads,
+                     const std::vector<Vec3>& normals, int v) {
+    for (size_t i = 0; i < quads.size(); ++i) {
+      const std::array<int, 4>& q = mesh.quads[quads[i]];
+      int k = 0;
+      while (q[k] != v) ++k;
+      const Vec3& next = mesh.vertices[q[(k + 1) % 4]];
+      const Vec3& opposite = mesh.vertices[q[(k + 2) % 4]];
+      const Vec3& previous = mesh.vertices[q[(k + 3) % 4]];
+      quads_.push_back({next, previous, sub(opposite, next), sub(opposite, previous), normals[i]});
+    }
+  }
+  double operator()(const Vec3& p) const {
+    double energy = 0;
+    for (const Quad& q : quads_) {
+      energy += cubed_deficit(sub(q.next, p), sub(q.previous, p), q.normal);
+      energy += cubed_deficit(q.next_to_opposite, sub(p, q.next), q.normal);
+      energy += cubed_deficit(sub(p, q.previous), q.previous_to_opposite, q.normal);
+    }
+    return energy;
+  }
+
+ private:
+  struct Quad {
+    Vec3 next, previous, next_to_opposite, previous_to_opposite, normal;
+  };
+  std::vector<Quad> quads_;
+};
 
 }  // namespace
 
@@ -147,9 +172,12 @@ PolishReport polish_quality(const PolishInput& in, const std::vector<int>& verti
     touched.insert(touched.end(), in.vertex_quads[v].begin(), in.vertex_quads[v].end());
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  // Only the samples farther than the farthest so far need their distance: asking whether one
+  // is within that bound is a much cheaper search.
   double tolerance = 0;
   for (const Vec3& p : hausdorff_samples(mesh, touched))
-    tolerance = std::max(tolerance, in.surface.closest(p).distance);
+    if (!in.surface.within(p, tolerance))
+      tolerance = std::max(tolerance, in.surface.closest(p).distance);
   // Whether every sample that moves with v is within the bound: near one of its quad's
   // corners (which lie on the surface) is enough, else the tree decides.
   const auto samples_within = [&](int v) {
@@ -198,10 +226,7 @@ PolishReport polish_quality(const PolishInput& in, const std::vector<int>& verti
       // that touch v are summed: the same minimizer to first order, at a third of the cost.
       std::vector<Vec3> normals;
       for (int f : quads) normals.push_back(normalized(newell_normal(mesh, mesh.quads[f])));
-      const auto energy_at = [&](const Vec3& p) {
-        mesh.vertices[v] = p;
-        return touching_corner_energy(mesh, quads, normals, v);
-      };
+      const MovingCornerEnergy energy_at(mesh, quads, normals, v);
       Vec3 target = old;
       if (in.on_curve(v)) {
         const std::optional<Vec3> direction = curve_direction(in, v, *frame, length);
