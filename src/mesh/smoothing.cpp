@@ -19,6 +19,7 @@
 #include "mesh/closest_point.hpp"
 #include "mesh/quad_quality.hpp"
 #include "mesh/quality_polish.hpp"
+#include "mesh/tangled_regions.hpp"
 #include "mesh/untangle.hpp"
 #include "mesh/vec3.hpp"
 
@@ -247,6 +248,11 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   run(options, &vertices, Phase::kRelaxAndUntangle);
 }
 
+void SurfaceSmoother::reembed_tangled(const SmoothingOptions& options,
+                                      const std::vector<int>& vertices) {
+  run(options, &vertices, Phase::kTangledRegions);
+}
+
 void SurfaceSmoother::polish(const SmoothingOptions& options) {
   run(options, nullptr, Phase::kPolish);
 }
@@ -257,8 +263,7 @@ void SurfaceSmoother::polish(const SmoothingOptions& options, const std::vector<
 
 void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int>* only,
                           Phase phase) {
-  if ((phase == Phase::kRelaxAndUntangle ? options.iterations : options.quality_rounds) <= 0)
-    return;
+  if ((phase == Phase::kPolish ? options.quality_rounds : options.iterations) <= 0) return;
   Setup& s = *setup_;
   const Layout& layout = s.layout;
   QuadMesh& mesh = s.t.mesh;
@@ -432,6 +437,20 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     }
     mesh.vertices[v] = chosen_quality >= std::min(before, kGoodEnough) ? chosen : old;
   };
+  if (phase == Phase::kTangledRegions) {
+    const auto free = [&](int v) { return movable(v) && curve[v] < 0 && !charts[v].empty(); };
+    const auto smooth = [&](const std::vector<int>& vertices) {
+      run(options, &vertices, Phase::kRelaxAndUntangle);
+    };
+    const auto quality = [&](int f) {
+      const auto [own, under, spread] = detail::quad_shape(mesh, mesh.quads[f], up[f]);
+      return std::array<double, 2>{own, under};
+    };
+    const detail::TangledRegionInput input{mesh,    vertex_quads, neighbours, free,
+                                           project, quality,      smooth};
+    detail::reembed_tangled_regions(input, active);
+    return;
+  }
   if (phase == Phase::kPolish) {
     if (!s.surface) s.surface = std::make_unique<detail::TriangleTree>(layout.mesh);
     const auto rating = [&](int v) {

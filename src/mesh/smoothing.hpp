@@ -28,6 +28,11 @@ class SurfaceSmoother {
   // The same restricted to the quad mesh vertices `vertices`: the others stay where they are.
   void run(const SmoothingOptions& options, const std::vector<int>& vertices);
 
+  // Re-embedding of the regions around quads still inverted after run() (tangled_regions.hpp),
+  // each smoothed again with `options`; only `vertices` move. Meant for requantize, whose
+  // patches are placed through the input's grid rather than flattened chart by chart.
+  void reembed_tangled(const SmoothingOptions& options, const std::vector<int>& vertices);
+
   // Quality polishing (`options.quality_rounds` rounds, quality_polish.hpp), meant as the last
   // step, after every run: moving vertices before a tangled chart's retries changes where
   // those start.
@@ -37,7 +42,7 @@ class SurfaceSmoother {
  private:
   struct Setup;
   std::unique_ptr<Setup> setup_;
-  enum class Phase { kRelaxAndUntangle, kPolish };
+  enum class Phase { kRelaxAndUntangle, kTangledRegions, kPolish };
   void run(const SmoothingOptions& options, const std::vector<int>* only, Phase phase);
 };
 

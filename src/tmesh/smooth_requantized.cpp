@@ -256,6 +256,7 @@ void smooth_requantized(const QuadMesh& input, const TMesh& tmesh, const TMeshIn
   {
     quant::SurfaceSmoother smoother(layout, t, &vertex_charts);
     smoother.run(options, moving);
+    smoother.reembed_tangled(options, moving);
     smoother.polish(options, moving);
   }
   result.mesh = std::move(t.mesh);

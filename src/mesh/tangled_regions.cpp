@@ -1,0 +1,163 @@
+#include "mesh/tangled_regions.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <tuple>
+
+#include "mesh/quad_quality.hpp"
+
+namespace bimdf::detail {
+namespace {
+
+// Regions grow by this many rings of quads around a cluster; a larger one is tried where a
+// smaller one did not untangle (its boundary may be too folded to lay flat).
+constexpr std::array<int, 3> kRings = {2, 3, 5};
+
+// Gauss–Seidel sweeps of the barycentric embedding: regions are a few quads across, so this
+// converges far beyond what smoothing then changes.
+constexpr int kTutteSweeps = 300;
+
+bool inverted(const TangledRegionInput& in, int f) {
+  const auto [own, under] = in.quality(f);
+  return std::min(own, under) < 0;
+}
+
+// How tangled the quads `quads` are, worst first: how many are inverted against their own
+// normal (what metrics.hpp reports), how many against either, and the worst scaled Jacobian.
+struct Tangle {
+  int inverted_own = 0;
+  int inverted = 0;
+  double worst = 1;
+  bool better_than(const Tangle& other) const {
+    return std::tuple{-inverted_own, -inverted, worst} >
+           std::tuple{-other.inverted_own, -other.inverted, other.worst};
+  }
+};
+
+Tangle tangle(const TangledRegionInput& in, const std::vector<int>& quads) {
+  Tangle t;
+  for (int f : quads) {
+    const auto [own, under] = in.quality(f);
+    t.inverted_own += own < 0;
+    t.inverted += std::min(own, under) < 0;
+    t.worst = std::min({t.worst, own, under});
+  }
+  return t;
+}
+
+// The quads within `rings` rings (sharing a vertex) of quad `seed`.
+std::vector<int> quads_around(const TangledRegionInput& in, int seed, int rings,
+                              std::vector<char>& mark) {
+  std::vector<int> region{seed};
+  mark[seed] = 1;
+  size_t ring_start = 0;
+  for (int r = 0; r < rings; ++r) {
+    const size_t ring_end = region.size();
+    for (size_t i = ring_start; i < ring_end; ++i)
+      for (int v : in.mesh.quads[region[i]])
+        for (int g : in.vertex_quads[v])
+          if (!mark[g]) mark[g] = 1, region.push_back(g);
+    ring_start = ring_end;
+  }
+  for (int f : region) mark[f] = 0;
+  return region;
+}
+
+// Lays region `quads` flat and places its inner vertices `inner` by Tutte's embedding.
+void place_inner_vertices(const TangledRegionInput& in, const std::vector<int>& quads,
+                          const std::vector<int>& inner) {
+  QuadMesh& mesh = in.mesh;
+  Vec3 normal{0, 0, 0}, centre{0, 0, 0};
+  std::vector<int> corners;
+  for (int f : quads) {
+    normal = along(normal, 1, newell_normal(mesh, mesh.quads[f]));
+    corners.insert(corners.end(), mesh.quads[f].begin(), mesh.quads[f].end());
+  }
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  for (int v : corners) centre = along(centre, 1.0 / corners.size(), mesh.vertices[v]);
+  if (!(norm(normal) > 0)) return;
+  normal = normalized(normal);
+  // Any axis not along the normal gives the plane's frame.
+  const Vec3 axis = std::fabs(normal[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  const Vec3 t1 = normalized(cross(normal, axis)), t2 = cross(normal, t1);
+  // Plane coordinates of every corner; the inner ones are then relaxed to their neighbours'
+  // mean (all their neighbours are corners of the region: their quads are in it).
+  std::vector<std::array<double, 2>> uv(corners.size());
+  const auto index = [&](int v) {
+    return std::lower_bound(corners.begin(), corners.end(), v) - corners.begin();
+  };
+  for (size_t i = 0; i < corners.size(); ++i) {
+    const Vec3 d = sub(mesh.vertices[corners[i]], centre);
+    uv[i] = {dot(d, t1), dot(d, t2)};
+  }
+  std::vector<std::vector<int>> inner_neighbours;
+  for (int v : inner) {
+    std::vector<int> around;
+    for (int w : in.neighbours[v]) around.push_back(static_cast<int>(index(w)));
+    inner_neighbours.push_back(std::move(around));
+  }
+  for (int sweep = 0; sweep < kTutteSweeps; ++sweep)
+    for (size_t k = 0; k < inner.size(); ++k) {
+      std::array<double, 2> mean{0, 0};
+      for (int j : inner_neighbours[k])
+        for (int d = 0; d < 2; ++d) mean[d] += uv[j][d] / inner_neighbours[k].size();
+      uv[index(inner[k])] = mean;
+    }
+  for (int v : inner) {
+    const std::array<double, 2>& p = uv[index(v)];
+    mesh.vertices[v] = in.project(v, along(along(centre, p[0], t1), p[1], t2));
+  }
+}
+
+}  // namespace
+
+TangledRegionReport reembed_tangled_regions(const TangledRegionInput& in,
+                                            const std::vector<int>& vertices) {
+  QuadMesh& mesh = in.mesh;
+  TangledRegionReport report;
+  std::vector<char> allowed(mesh.num_vertices(), 0), quad_mark(mesh.num_quads(), 0);
+  for (int v : vertices) allowed[v] = in.free(v);
+  const auto count_inverted = [&] {
+    int count = 0;
+    for (int f = 0; f < mesh.num_quads(); ++f) count += inverted(in, f);
+    return count;
+  };
+  report.inverted_before = count_inverted();
+  for (int rings : kRings) {
+    std::vector<char> handled(mesh.num_quads(), 0);
+    for (int seed = 0; seed < mesh.num_quads(); ++seed) {
+      if (handled[seed] || !inverted(in, seed)) continue;
+      const std::vector<int> quads = quads_around(in, seed, rings, quad_mark);
+      for (int f : quads) quad_mark[f] = 1;
+      std::vector<int> inner;
+      for (int f : quads) {
+        if (inverted(in, f)) handled[f] = 1;
+        for (int v : mesh.quads[f]) {
+          if (!allowed[v] || std::find(inner.begin(), inner.end(), v) != inner.end()) continue;
+          const auto& around = in.vertex_quads[v];
+          if (std::all_of(around.begin(), around.end(), [&](int g) { return quad_mark[g]; }))
+            inner.push_back(v);
+        }
+      }
+      for (int f : quads) quad_mark[f] = 0;
+      if (inner.empty()) continue;
+      ++report.regions;
+      const Tangle before = tangle(in, quads);
+      std::vector<Vec3> saved;
+      for (int v : inner) saved.push_back(mesh.vertices[v]);
+      place_inner_vertices(in, quads, inner);
+      in.smooth(inner);
+      if (tangle(in, quads).better_than(before)) {
+        ++report.kept;
+        continue;
+      }
+      for (size_t k = 0; k < inner.size(); ++k) mesh.vertices[inner[k]] = saved[k];
+    }
+  }
+  report.inverted_after = count_inverted();
+  return report;
+}
+
+}  // namespace bimdf::detail

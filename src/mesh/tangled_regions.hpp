@@ -1,0 +1,51 @@
+// Re-embedding tangled regions: the last resort of smoothing where relaxation and untangling
+// leave quads inverted. Both move one vertex at a time, so a cluster in which every single
+// move turns another quad over stays as it is — in `requantize`, output patches placed through
+// the input grid and stretched over strips that collapsed next to them (issue 21). Here each
+// cluster of inverted quads, grown by a few rings of quads, is laid flat on the plane of its
+// quads' mean normal; its inner vertices are placed by Tutte's barycentric embedding of the
+// region's boundary (each inner vertex the mean of its neighbours), put back onto the surface
+// and smoothed again. The new positions are kept only if the region then has fewer inverted
+// quads, or as many with a better worst one, so the pass never makes the mesh worse by that
+// count. Tutte's embedding is one-to-one on the plane when the boundary's projection is
+// convex; where it is not, smoothing often still untangles what it folds, and the rule above
+// decides.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "bimdf/mesh.hpp"
+#include "mesh/vec3.hpp"
+
+namespace bimdf::detail {
+
+struct TangledRegionInput {
+  QuadMesh& mesh;                                     // positions are updated in place
+  const std::vector<std::vector<int>>& vertex_quads;  // per vertex, the quads containing it
+  const std::vector<std::vector<int>>& neighbours;    // per vertex, its edge neighbours
+  // Whether the vertex may be placed anywhere on its part of the surface: false for pinned
+  // vertices and for those that slide along a curve, which stay on the region's boundary.
+  std::function<bool(int)> free;
+  std::function<Vec3(int, const Vec3&)> project;  // a point back onto the vertex's surface
+  // A quad's scaled Jacobian against its own normal (what metrics.hpp reports) and against the
+  // surface's under it, negative where it is inverted: both count, so that a region laid flat
+  // the wrong way round does not pass for untangled.
+  std::function<std::array<double, 2>(int)> quality;
+  // Relaxes and untangles the given vertices (the others stay).
+  std::function<void(const std::vector<int>&)> smooth;
+};
+
+struct TangledRegionReport {
+  int regions = 0;          // regions re-embedded
+  int kept = 0;             // of which the new positions were kept
+  int inverted_before = 0;  // inverted quads in the mesh before the pass
+  int inverted_after = 0;   // and after it
+};
+
+// Re-embeds the regions around inverted quads; only the vertices `vertices` may move.
+TangledRegionReport reembed_tangled_regions(const TangledRegionInput& input,
+                                            const std::vector<int>& vertices);
+
+}  // namespace bimdf::detail
