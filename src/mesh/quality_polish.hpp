@@ -35,16 +35,13 @@
 
 #include "bimdf/mesh.hpp"
 #include "mesh/closest_point.hpp"
+#include "mesh/mesh_on_surface.hpp"
 
 namespace bimdf::detail {
 
-struct PolishInput {
-  QuadMesh& mesh;                                     // positions are updated in place
-  const std::vector<std::vector<int>>& vertex_quads;  // per vertex, the quads containing it
-  const std::vector<std::vector<int>>& neighbours;    // per vertex, its edge neighbours
-  const TriangleTree& surface;                        // the whole input surface (rule 3)
-  std::function<bool(int)> movable;                   // false: the vertex stays (corners, pins)
-  std::function<Vec3(int, const Vec3&)> project;      // a point back onto the vertex's surface
+struct PolishInput : MeshOnSurface {
+  const TriangleTree& surface;        // the whole input surface (rule 3)
+  std::function<bool(int)> movable;   // false: the vertex stays (corners, pins)
   std::function<bool(int)> on_curve;  // whether project() puts the vertex on a curve (1-D moves)
   // How the quads at a vertex rate at the current positions (rule 2).
   struct Rating {

@@ -446,8 +446,8 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       const auto [own, under, spread] = detail::quad_shape(mesh, mesh.quads[f], up[f]);
       return std::array<double, 2>{own, under};
     };
-    const detail::TangledRegionInput input{mesh,    vertex_quads, neighbours, free,
-                                           project, quality,      smooth};
+    const detail::TangledRegionInput input{
+        {mesh, vertex_quads, neighbours, project}, free, quality, smooth};
     detail::reembed_tangled_regions(input, active);
     return;
   }
@@ -458,8 +458,8 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       return detail::PolishInput::Rating{r.quality, r.own_worst, r.turned};
     };
     const auto on_curve = [&](int v) { return curve[v] >= 0; };
-    const detail::PolishInput polish{mesh,    vertex_quads, neighbours, *s.surface,
-                                     movable, project,      on_curve,   rating};
+    const detail::PolishInput polish{
+        {mesh, vertex_quads, neighbours, project}, *s.surface, movable, on_curve, rating};
     detail::polish_quality(polish, active, options.quality_rounds);
     return;
   }

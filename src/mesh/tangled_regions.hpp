@@ -17,18 +17,14 @@
 #include <vector>
 
 #include "bimdf/mesh.hpp"
-#include "mesh/vec3.hpp"
+#include "mesh/mesh_on_surface.hpp"
 
 namespace bimdf::detail {
 
-struct TangledRegionInput {
-  QuadMesh& mesh;                                     // positions are updated in place
-  const std::vector<std::vector<int>>& vertex_quads;  // per vertex, the quads containing it
-  const std::vector<std::vector<int>>& neighbours;    // per vertex, its edge neighbours
+struct TangledRegionInput : MeshOnSurface {
   // Whether the vertex may be placed anywhere on its part of the surface: false for pinned
   // vertices and for those that slide along a curve, which stay on the region's boundary.
   std::function<bool(int)> free;
-  std::function<Vec3(int, const Vec3&)> project;  // a point back onto the vertex's surface
   // A quad's scaled Jacobian against its own normal (what metrics.hpp reports) and against the
   // surface's under it, negative where it is inverted: both count, so that a region laid flat
   // the wrong way round does not pass for untangled.
