@@ -1,4 +1,4 @@
-// Minimum-cost flow on a directed network (reduce/directed_mcf.hpp): from scratch by LEMON's
+// Minimum-cost flow on a directed network (graph/directed_mcf.hpp): from scratch by LEMON's
 // network simplex, or, given the potentials of a similar problem solved before, by our
 // shortest-path solver started from them (backend/shortest_path_flow.hpp), which gives way to
 // the network simplex when the start is too far off. This header is LEMON-free so that C++20
@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "reduce/directed_mcf.hpp"
+#include "graph/directed_mcf.hpp"
 
 namespace bimdf::detail {
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "reduce/matching_graph.hpp"
+#include "graph/matching_graph.hpp"
 
 namespace bimdf::detail {
 

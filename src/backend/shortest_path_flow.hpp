@@ -1,5 +1,5 @@
 // Minimum-cost flow by successive shortest paths from given node potentials: our own solver
-// (no LEMON), made to be warm-started, for the directed networks of reduce/directed_mcf.hpp.
+// (no LEMON), made to be warm-started, for the directed networks of graph/directed_mcf.hpp.
 //
 // Problem: arcs with lower bound 0, a capacity (possibly infinite) and an integer cost per
 // unit; node supplies (outflow − inflow); find a flow of minimum total cost, or prove that

@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "reduce/bimcf.hpp"
-#include "reduce/directed_mcf.hpp"
+#include "graph/directed_mcf.hpp"
 
 namespace bimdf::detail {
 

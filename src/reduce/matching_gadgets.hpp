@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "reduce/bmatching.hpp"
-#include "reduce/matching_graph.hpp"
+#include "graph/matching_graph.hpp"
 
 namespace bimdf::detail {
 

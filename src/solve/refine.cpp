@@ -15,7 +15,7 @@
 #include "reduce/bmatching.hpp"
 #include "reduce/linearize.hpp"
 #include "reduce/matching_gadgets.hpp"
-#include "reduce/residual_pruning.hpp"
+#include "solve/residual_pruning.hpp"
 
 namespace bimdf::detail {
 namespace {

@@ -19,7 +19,7 @@
 #include "random_problem.hpp"
 #include "reduce/bmatching.hpp"
 #include "reduce/matching_gadgets.hpp"
-#include "reduce/residual_pruning.hpp"
+#include "solve/residual_pruning.hpp"
 
 namespace {
 

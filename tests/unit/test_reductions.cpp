@@ -23,7 +23,7 @@
 #include "reduce/outer_edges.hpp"
 #include "reduce/parity.hpp"
 #include "reduce/phase_one.hpp"
-#include "reduce/residual_pruning.hpp"
+#include "solve/residual_pruning.hpp"
 #include "solve/refine.hpp"
 #include "test_helpers.hpp"
 

@@ -1,7 +1,9 @@
 // A directed minimum-cost flow problem as plain arrays, in LEMON's convention: supply[v] =
 // outflow − inflow, lower bounds 0, capacities that may be infinite (INT64_MAX, the same value
 // as bimdf::kInfinity). Costs stay double; the backend scales them (backend/min_cost_flow.hpp).
-// Deliberately free of other bimdf headers: the C++17 backend includes it (DESIGN §6).
+// Deliberately free of other bimdf headers: the C++17 backend includes it (DESIGN §6). It lives
+// in src/graph/, below both the reductions that build it and the backends that solve it
+// (DESIGN §4).
 #pragma once
 
 #include <cstdint>

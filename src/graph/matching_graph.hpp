@@ -1,5 +1,6 @@
 // An undirected graph with edge weights, for maximum-weight perfect matching. Plain arrays and
-// free of other bimdf headers: the C++17 backend includes it (DESIGN §6).
+// free of other bimdf headers: the C++17 backend includes it (DESIGN §6). It lives in src/graph/,
+// below both the reductions that build it and the backends that solve it (DESIGN §4).
 #pragma once
 
 #include <vector>

@@ -1,4 +1,4 @@
-#include "reduce/residual_pruning.hpp"
+#include "solve/residual_pruning.hpp"
 
 #include <algorithm>
 #include <cmath>
