@@ -169,4 +169,8 @@ bool TriangleTree::within(const Vec3& p, double radius) const {
   return !nodes_.empty() && any_within(0, p, radius * radius);
 }
 
+double TriangleTree::farther(const Vec3& p, double farthest) const {
+  return within(p, farthest) ? farthest : std::max(farthest, closest(p).distance);
+}
+
 }  // namespace bimdf::detail

@@ -34,6 +34,10 @@ class TriangleTree {
   // Whether some triangle is within `radius` of p: the search starts with that bound, so it
   // visits far fewer nodes than closest() when the answer is near.
   bool within(const Vec3& p, double radius) const;
+  // max(farthest, distance from p to the mesh), for taking the farthest of many points (a
+  // Hausdorff distance): only a point beyond the running maximum needs its distance, and asking
+  // whether one is within that bound is a much cheaper search than closest().
+  double farther(const Vec3& p, double farthest) const;
 
  private:
   struct Node {

@@ -161,12 +161,7 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
     for (const Vec3& p : reference->vertices)
       for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], p[d]), hi[d] = std::max(hi[d], p[d]);
     m.hausdorff = 0;
-    // Only a sample farther than the farthest so far changes the maximum, and asking whether
-    // one is within that bound is a much cheaper search than its distance.
-    const auto sample = [&](const Vec3& p) {
-      if (!tree.within(p, m.hausdorff))
-        m.hausdorff = std::max(m.hausdorff, tree.closest(p).distance);
-    };
+    const auto sample = [&](const Vec3& p) { m.hausdorff = tree.farther(p, m.hausdorff); };
     // The reference's unit normal at each vertex's closest point. Vertices lie on the surface
     // (distance ~0), so unlike a quad's centre they cannot pick the far side of a thin part.
     std::vector<Vec3> vertex_normal(nv, Vec3{0, 0, 0});

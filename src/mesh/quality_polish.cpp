@@ -172,12 +172,9 @@ PolishReport polish_quality(const PolishInput& in, const std::vector<int>& verti
     touched.insert(touched.end(), in.vertex_quads[v].begin(), in.vertex_quads[v].end());
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-  // Only the samples farther than the farthest so far need their distance: asking whether one
-  // is within that bound is a much cheaper search.
   double tolerance = 0;
   for (const Vec3& p : hausdorff_samples(mesh, touched))
-    if (!in.surface.within(p, tolerance))
-      tolerance = std::max(tolerance, in.surface.closest(p).distance);
+    tolerance = in.surface.farther(p, tolerance);
   // Whether every sample that moves with v is within the bound: near one of its quad's
   // corners (which lie on the surface) is enough, else the tree decides.
   const auto samples_within = [&](int v) {

@@ -92,8 +92,11 @@ void place_inner_vertices(const TangledRegionInput& in, const std::vector<int>& 
     const Vec3 d = sub(mesh.vertices[corners[i]], centre);
     uv[i] = {dot(d, t1), dot(d, t2)};
   }
+  // The sweeps work on positions in `corners`: each inner vertex's own and its neighbours'.
+  std::vector<int> inner_at;
   std::vector<std::vector<int>> inner_neighbours;
   for (int v : inner) {
+    inner_at.push_back(static_cast<int>(index(v)));
     std::vector<int> around;
     for (int w : in.neighbours[v]) around.push_back(static_cast<int>(index(w)));
     inner_neighbours.push_back(std::move(around));
@@ -103,11 +106,11 @@ void place_inner_vertices(const TangledRegionInput& in, const std::vector<int>& 
       std::array<double, 2> mean{0, 0};
       for (int j : inner_neighbours[k])
         for (int d = 0; d < 2; ++d) mean[d] += uv[j][d] / inner_neighbours[k].size();
-      uv[index(inner[k])] = mean;
+      uv[inner_at[k]] = mean;
     }
-  for (int v : inner) {
-    const std::array<double, 2>& p = uv[index(v)];
-    mesh.vertices[v] = in.project(v, along(along(centre, p[0], t1), p[1], t2));
+  for (size_t k = 0; k < inner.size(); ++k) {
+    const std::array<double, 2>& p = uv[inner_at[k]];
+    mesh.vertices[inner[k]] = in.project(inner[k], along(along(centre, p[0], t1), p[1], t2));
   }
 }
 
