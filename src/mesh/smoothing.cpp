@@ -289,8 +289,9 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       const auto [own, under, spread] = detail::quad_shape(mesh, mesh.quads[f], up[f]);
       return std::array<double, 2>{own, under};
     };
+    const auto normal_under = [&](int f) { return up[f]; };
     const detail::TangledRegionInput input{
-        {mesh, vertex_quads, neighbours, project}, free, quality, smooth};
+        {mesh, vertex_quads, neighbours, project}, free, quality, normal_under, smooth};
     detail::reembed_tangled_regions(input, active);
     return;
   }

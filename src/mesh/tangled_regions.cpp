@@ -4,8 +4,10 @@
 #include <array>
 #include <cmath>
 #include <tuple>
+#include <unordered_map>
 
 #include "mesh/quad_quality.hpp"
+#include "mesh/surface_untangling.hpp"
 
 namespace bimdf::detail {
 namespace {
@@ -114,6 +116,35 @@ void place_inner_vertices(const TangledRegionInput& in, const std::vector<int>& 
   }
 }
 
+// Moves the inner vertices `inner` of region `quads` all at once down the untangling energy of
+// surface_untangling.hpp, measured against the surface's normal under each quad.
+void descend_untangling(const TangledRegionInput& in, const std::vector<int>& quads,
+                        const std::vector<int>& inner) {
+  QuadMesh& mesh = in.mesh;
+  QuadsOnSurface region;
+  std::vector<int> corners;  // region point → mesh vertex
+  std::unordered_map<int, int> point;
+  double length = 0;
+  for (int f : quads) {
+    std::array<int, 4> at;
+    for (int i = 0; i < 4; ++i) {
+      const int v = mesh.quads[f][i];
+      const auto [it, added] = point.emplace(v, static_cast<int>(corners.size()));
+      if (added) corners.push_back(v), region.points.push_back(mesh.vertices[v]);
+      at[i] = it->second;
+      length += norm(sub(mesh.vertices[mesh.quads[f][(i + 1) % 4]], mesh.vertices[v]));
+    }
+    region.quads.push_back(at);
+    const Vec3 n = in.surface_normal(f);
+    region.normals.push_back(norm(n) > 0 ? n : normalized(newell_normal(mesh, mesh.quads[f])));
+  }
+  region.movable.assign(corners.size(), 0);
+  for (int v : inner) region.movable[point.at(v)] = 1;
+  region.project = [&](int k, const Vec3& p) { return in.project(corners[k], p); };
+  untangle_quads_on_surface(region, length / (4.0 * quads.size()));
+  for (int v : inner) mesh.vertices[v] = region.points[point.at(v)];
+}
+
 }  // namespace
 
 TangledRegionReport reembed_tangled_regions(const TangledRegionInput& in,
@@ -150,13 +181,25 @@ TangledRegionReport reembed_tangled_regions(const TangledRegionInput& in,
       const Tangle before = tangle(in, quads);
       std::vector<Vec3> saved;
       for (int v : inner) saved.push_back(mesh.vertices[v]);
-      place_inner_vertices(in, quads, inner);
-      in.smooth(inner);
-      if (tangle(in, quads).better_than(before)) {
-        ++report.kept;
-        continue;
+      // Three placements, the best kept: Tutte's embedding, and the untangling descent started
+      // from the current positions and from Tutte's. The descent is tried only where Tutte's
+      // leaves quads inverted: once none is, the others could only raise the worst quad.
+      Tangle best = before;
+      std::vector<Vec3> chosen;
+      for (int placement = 0; placement < 3 && best.inverted > 0; ++placement) {
+        if (placement != 1) place_inner_vertices(in, quads, inner);
+        if (placement != 0) descend_untangling(in, quads, inner);
+        in.smooth(inner);
+        const Tangle now = tangle(in, quads);
+        if (now.better_than(best)) {
+          best = now;
+          chosen.clear();
+          for (int v : inner) chosen.push_back(mesh.vertices[v]);
+        }
+        for (size_t k = 0; k < inner.size(); ++k) mesh.vertices[inner[k]] = saved[k];
       }
-      for (size_t k = 0; k < inner.size(); ++k) mesh.vertices[inner[k]] = saved[k];
+      for (size_t k = 0; k < chosen.size(); ++k) mesh.vertices[inner[k]] = chosen[k];
+      report.kept += !chosen.empty();
     }
   }
   report.inverted_after = count_inverted();

@@ -2,14 +2,16 @@
 // leave quads inverted. Both move one vertex at a time, so a cluster in which every single
 // move turns another quad over stays as it is — in `requantize`, output patches placed through
 // the input grid and stretched over strips that collapsed next to them (issue 21). Here each
-// cluster of inverted quads, grown by a few rings of quads, is laid flat on the plane of its
-// quads' mean normal; its inner vertices are placed by Tutte's barycentric embedding of the
-// region's boundary (each inner vertex the mean of its neighbours), put back onto the surface
-// and smoothed again. The new positions are kept only if the region then has fewer inverted
-// quads, or as many with a better worst one, so the pass never makes the mesh worse by that
-// count. Tutte's embedding is one-to-one on the plane when the boundary's projection is
-// convex; where it is not, smoothing often still untangles what it folds, and the rule above
-// decides.
+// cluster of inverted quads, grown by a few rings of quads, gets its inner vertices placed
+// anew, in up to three ways, each smoothed again afterwards: by Tutte's barycentric embedding
+// of the region's boundary laid flat on the plane of its quads' mean normal (each inner vertex
+// the mean of its neighbours) and put back onto the surface; and, where that leaves quads
+// inverted, by moving all inner vertices at once down the untangling energy of
+// surface_untangling.hpp, from the current positions and from Tutte's. Tutte's embedding is
+// one-to-one on the plane when the boundary's projection is convex; the descent needs neither
+// a convex nor a flat boundary, but may stop in a local minimum. The best placement is kept
+// only if the region then has fewer inverted quads, or as many with a better worst one, so the
+// pass never makes the mesh worse by that count.
 #pragma once
 
 #include <array>
@@ -29,6 +31,8 @@ struct TangledRegionInput : MeshOnSurface {
   // surface's under it, negative where it is inverted: both count, so that a region laid flat
   // the wrong way round does not pass for untangled.
   std::function<std::array<double, 2>(int)> quality;
+  // The surface's unit normal under a quad (zero where unknown: the quad's own is taken).
+  std::function<Vec3(int)> surface_normal;
   // Relaxes and untangles the given vertices (the others stay).
   std::function<void(const std::vector<int>&)> smooth;
 };

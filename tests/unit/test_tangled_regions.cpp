@@ -63,6 +63,9 @@ TangledRegionInput input_for(Grid& g, std::function<void(const std::vector<int>&
             const double up = scaled_jacobian(g.mesh, g.mesh.quads[f], {0, 0, 1});
             return std::array<double, 2>{scaled_jacobian(g.mesh, g.mesh.quads[f]), up};
           },
+          [](int) {
+            return Vec3{0, 0, 1};
+          },
           std::move(smooth)};
 }
 
