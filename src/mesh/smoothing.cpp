@@ -92,8 +92,9 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
 }
 
 void SurfaceSmoother::reembed_tangled(const SmoothingOptions& options,
-                                      const std::vector<int>& vertices) {
-  run(options, &vertices, Phase::kTangledRegions);
+                                      const std::vector<int>& vertices,
+                                      const std::vector<std::array<double, 3>>* placed) {
+  run(options, &vertices, Phase::kTangledRegions, placed);
 }
 
 void SurfaceSmoother::polish(const SmoothingOptions& options) {
@@ -105,7 +106,7 @@ void SurfaceSmoother::polish(const SmoothingOptions& options, const std::vector<
 }
 
 void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int>* only,
-                          Phase phase) {
+                          Phase phase, const std::vector<std::array<double, 3>>* placed) {
   if ((phase == Phase::kPolish ? options.quality_rounds : options.iterations) <= 0) return;
   Setup& s = *setup_;
   const Layout& layout = s.layout;
@@ -281,7 +282,12 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     mesh.vertices[v] = chosen_quality >= std::min(before, kGoodEnough) ? chosen : old;
   };
   if (phase == Phase::kTangledRegions) {
-    const auto free = [&](int v) { return movable(v) && curve[v] < 0 && !charts[v].empty(); };
+    using Freedom = detail::TangledRegionInput::Freedom;
+    const auto freedom = [&](int v) {
+      if (!movable(v)) return Freedom::kPinned;
+      if (curve[v] >= 0) return Freedom::kOnCurve;
+      return charts[v].empty() ? Freedom::kPinned : Freedom::kFree;
+    };
     const auto smooth = [&](const std::vector<int>& vertices) {
       run(options, &vertices, Phase::kRelaxAndUntangle);
     };
@@ -291,7 +297,7 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     };
     const auto normal_under = [&](int f) { return up[f]; };
     const detail::TangledRegionInput input{
-        {mesh, vertex_quads, neighbours, project}, free, quality, normal_under, smooth};
+        {mesh, vertex_quads, neighbours, project}, freedom, quality, normal_under, smooth, placed};
     detail::reembed_tangled_regions(input, active);
     return;
   }

@@ -31,7 +31,10 @@ class SurfaceSmoother {
   // Re-embedding of the regions around quads still inverted after run() (tangled_regions.hpp),
   // each smoothed again with `options`; only `vertices` move. Meant for requantize, whose
   // patches are placed through the input's grid rather than flattened chart by chart.
-  void reembed_tangled(const SmoothingOptions& options, const std::vector<int>& vertices);
+  // `placed`, when given, holds every vertex's position before run(): a region may go back
+  // to it where smoothing turned quads over that the placement had not.
+  void reembed_tangled(const SmoothingOptions& options, const std::vector<int>& vertices,
+                       const std::vector<std::array<double, 3>>* placed = nullptr);
 
   // Quality polishing (`options.quality_rounds` rounds, quality_polish.hpp), meant as the last
   // step, after every run: moving vertices before a tangled chart's retries changes where
@@ -43,7 +46,8 @@ class SurfaceSmoother {
   struct Setup;
   std::unique_ptr<Setup> setup_;
   enum class Phase { kRelaxAndUntangle, kTangledRegions, kPolish };
-  void run(const SmoothingOptions& options, const std::vector<int>* only, Phase phase);
+  void run(const SmoothingOptions& options, const std::vector<int>* only, Phase phase,
+           const std::vector<std::array<double, 3>>* placed = nullptr);
 };
 
 }  // namespace bimdf::quant

@@ -20,6 +20,11 @@ constexpr std::array<int, 3> kRings = {2, 3, 5};
 // converges far beyond what smoothing then changes.
 constexpr int kTutteSweeps = 300;
 
+enum class Placement { kTutte, kDescent, kTutteThenDescent, kBeforeSmoothing };
+constexpr std::array<Placement, 4> kPlacements = {Placement::kTutte, Placement::kDescent,
+                                                  Placement::kTutteThenDescent,
+                                                  Placement::kBeforeSmoothing};
+
 bool inverted(const TangledRegionInput& in, int f) {
   const auto [own, under] = in.quality(f);
   return std::min(own, under) < 0;
@@ -151,8 +156,10 @@ TangledRegionReport reembed_tangled_regions(const TangledRegionInput& in,
                                             const std::vector<int>& vertices) {
   QuadMesh& mesh = in.mesh;
   TangledRegionReport report;
-  std::vector<char> allowed(mesh.num_vertices(), 0), quad_mark(mesh.num_quads(), 0);
-  for (int v : vertices) allowed[v] = in.free(v);
+  using Freedom = TangledRegionInput::Freedom;
+  std::vector<Freedom> freedom(mesh.num_vertices(), Freedom::kPinned);
+  std::vector<char> quad_mark(mesh.num_quads(), 0);
+  for (int v : vertices) freedom[v] = in.freedom(v);
   const auto count_inverted = [&] {
     int count = 0;
     for (int f = 0; f < mesh.num_quads(); ++f) count += inverted(in, f);
@@ -169,7 +176,9 @@ TangledRegionReport reembed_tangled_regions(const TangledRegionInput& in,
       for (int f : quads) {
         if (inverted(in, f)) handled[f] = 1;
         for (int v : mesh.quads[f]) {
-          if (!allowed[v] || std::find(inner.begin(), inner.end(), v) != inner.end()) continue;
+          if (freedom[v] == Freedom::kPinned ||
+              std::find(inner.begin(), inner.end(), v) != inner.end())
+            continue;
           const auto& around = in.vertex_quads[v];
           if (std::all_of(around.begin(), around.end(), [&](int g) { return quad_mark[g]; }))
             inner.push_back(v);
@@ -177,19 +186,29 @@ TangledRegionReport reembed_tangled_regions(const TangledRegionInput& in,
       }
       for (int f : quads) quad_mark[f] = 0;
       if (inner.empty()) continue;
+      std::vector<int> free_inner;
+      for (int v : inner)
+        if (freedom[v] == Freedom::kFree) free_inner.push_back(v);
       ++report.regions;
       const Tangle before = tangle(in, quads);
       std::vector<Vec3> saved;
       for (int v : inner) saved.push_back(mesh.vertices[v]);
-      // Three placements, the best kept: Tutte's embedding, and the untangling descent started
-      // from the current positions and from Tutte's. The descent is tried only where Tutte's
-      // leaves quads inverted: once none is, the others could only raise the worst quad.
+      // Up to four placements, the best kept: Tutte's embedding; the untangling descent
+      // started from the current positions and from Tutte's; the positions before smoothing.
+      // Each is tried only while the best so far leaves quads inverted: once none is, the
+      // others could only raise the worst quad.
       Tangle best = before;
       std::vector<Vec3> chosen;
-      for (int placement = 0; placement < 3 && best.inverted > 0; ++placement) {
-        if (placement != 1) place_inner_vertices(in, quads, inner);
-        if (placement != 0) descend_untangling(in, quads, inner);
-        in.smooth(inner);
+      for (Placement placement : kPlacements) {
+        if (best.inverted == 0) break;
+        if (placement == Placement::kBeforeSmoothing) {
+          if (!in.placed) break;
+          for (int v : inner) mesh.vertices[v] = (*in.placed)[v];
+        } else {
+          if (placement != Placement::kDescent) place_inner_vertices(in, quads, free_inner);
+          if (placement != Placement::kTutte) descend_untangling(in, quads, inner);
+          in.smooth(inner);
+        }
         const Tangle now = tangle(in, quads);
         if (now.better_than(best)) {
           best = now;

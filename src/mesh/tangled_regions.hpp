@@ -2,16 +2,21 @@
 // leave quads inverted. Both move one vertex at a time, so a cluster in which every single
 // move turns another quad over stays as it is — in `requantize`, output patches placed through
 // the input grid and stretched over strips that collapsed next to them (issue 21). Here each
-// cluster of inverted quads, grown by a few rings of quads, gets its inner vertices placed
-// anew, in up to three ways, each smoothed again afterwards: by Tutte's barycentric embedding
-// of the region's boundary laid flat on the plane of its quads' mean normal (each inner vertex
-// the mean of its neighbours) and put back onto the surface; and, where that leaves quads
-// inverted, by moving all inner vertices at once down the untangling energy of
-// surface_untangling.hpp, from the current positions and from Tutte's. Tutte's embedding is
-// one-to-one on the plane when the boundary's projection is convex; the descent needs neither
-// a convex nor a flat boundary, but may stop in a local minimum. The best placement is kept
-// only if the region then has fewer inverted quads, or as many with a better worst one, so the
-// pass never makes the mesh worse by that count.
+// cluster of inverted quads, grown by a few rings of quads, gets its inner vertices (those all
+// of whose quads are in the region, unless pinned) placed anew, in up to four ways:
+//  1. Tutte's barycentric embedding of the region's boundary laid flat on the plane of its
+//     quads' mean normal (each free vertex the mean of its neighbours; vertices on curves are
+//     part of that boundary), put back onto the surface;
+//  2. and 3. all inner vertices moved at once down the untangling energy of
+//     surface_untangling.hpp (curve vertices along their curves), from the current positions
+//     and from Tutte's;
+//  4. the positions before smoothing, where given: smoothing may turn a quad over against its
+//     own normal to right others against the surface's, which on slivers can point astray.
+// The first three are smoothed again afterwards. Tutte's embedding is one-to-one on the plane
+// when the boundary's projection is convex; the descent needs neither a convex nor a flat
+// boundary, but may stop in a local minimum. The best placement is kept only if the region
+// then has fewer inverted quads, or as many with a better worst one, so the pass never makes
+// the mesh worse by that count.
 #pragma once
 
 #include <array>
@@ -24,9 +29,12 @@
 namespace bimdf::detail {
 
 struct TangledRegionInput : MeshOnSurface {
-  // Whether the vertex may be placed anywhere on its part of the surface: false for pinned
-  // vertices and for those that slide along a curve, which stay on the region's boundary.
-  std::function<bool(int)> free;
+  // How a vertex may move: not at all, along its curve (border or feature; `project` keeps it
+  // there), or anywhere on its part of the surface. Tutte's embedding places only the last
+  // kind (the others are part of the region's boundary); the descent and the way back to
+  // `placed` move the last two.
+  enum class Freedom { kPinned, kOnCurve, kFree };
+  std::function<Freedom(int)> freedom;
   // A quad's scaled Jacobian against its own normal (what metrics.hpp reports) and against the
   // surface's under it, negative where it is inverted: both count, so that a region laid flat
   // the wrong way round does not pass for untangled.
@@ -35,6 +43,10 @@ struct TangledRegionInput : MeshOnSurface {
   std::function<Vec3(int)> surface_normal;
   // Relaxes and untangles the given vertices (the others stay).
   std::function<void(const std::vector<int>&)> smooth;
+  // Where every vertex was placed before smoothing, if known: smoothing can turn a quad over
+  // against its own normal to right others against the surface's, and the region's last
+  // alternative is to go back there (unsmoothed).
+  const std::vector<Vec3>* placed = nullptr;
 };
 
 struct TangledRegionReport {

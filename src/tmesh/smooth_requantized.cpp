@@ -255,8 +255,9 @@ void smooth_requantized(const QuadMesh& input, const TMesh& tmesh, const TMeshIn
   const std::vector<int> moving = movable_vertices(t.mesh);
   {
     quant::SurfaceSmoother smoother(layout, t, &vertex_charts);
+    const std::vector<Vec3> placed = t.mesh.vertices;
     smoother.run(options, moving);
-    smoother.reembed_tangled(options, moving);
+    smoother.reembed_tangled(options, moving, &placed);
     smoother.polish(options, moving);
   }
   result.mesh = std::move(t.mesh);

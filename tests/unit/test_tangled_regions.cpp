@@ -58,7 +58,10 @@ int count_inverted(const QuadMesh& mesh) {
 TangledRegionInput input_for(Grid& g, std::function<void(const std::vector<int>&)> smooth) {
   const auto on_plane = [](int, const Vec3& p) { return Vec3{p[0], p[1], 0}; };
   return {{g.mesh, g.vertex_quads, g.neighbours, on_plane},
-          [&g](int v) { return g.inside(v); },
+          [&g](int v) {
+            return g.inside(v) ? TangledRegionInput::Freedom::kFree
+                               : TangledRegionInput::Freedom::kPinned;
+          },
           [&g](int f) {
             const double up = scaled_jacobian(g.mesh, g.mesh.quads[f], {0, 0, 1});
             return std::array<double, 2>{scaled_jacobian(g.mesh, g.mesh.quads[f]), up};
