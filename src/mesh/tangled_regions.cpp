@@ -30,15 +30,25 @@ bool inverted(const TangledRegionInput& in, int f) {
   return std::min(own, under) < 0;
 }
 
-// How tangled the quads `quads` are, worst first: how many are inverted against their own
-// normal (what metrics.hpp reports), how many against either, and the worst scaled Jacobian.
+// A quad whose worst corner against its own normal is below this is all but flat.
+constexpr double kFlat = 0.01;
+
+// How tangled the quads `quads` are: how many are inverted against their own normal (what
+// metrics.hpp reports), how many against either, the worst scaled Jacobian against either and
+// against their own normal.
 struct Tangle {
   int inverted_own = 0;
   int inverted = 0;
   double worst = 1;
+  double worst_own = 1;
+  // Fewer inverted against their own normal; with as many, fewer against either or a better
+  // worst quad — but not by flattening a quad against its own normal (below kFlat and below
+  // the worst before): a quad righted against the surface's normal, which can point astray,
+  // is not worth a degenerate one.
   bool better_than(const Tangle& other) const {
-    return std::tuple{-inverted_own, -inverted, worst} >
-           std::tuple{-other.inverted_own, -other.inverted, other.worst};
+    if (inverted_own != other.inverted_own) return inverted_own < other.inverted_own;
+    if (worst_own < std::min(other.worst_own, kFlat)) return false;
+    return std::tuple{-inverted, worst} > std::tuple{-other.inverted, other.worst};
   }
 };
 
@@ -49,6 +59,7 @@ Tangle tangle(const TangledRegionInput& in, const std::vector<int>& quads) {
     t.inverted_own += own < 0;
     t.inverted += std::min(own, under) < 0;
     t.worst = std::min({t.worst, own, under});
+    t.worst_own = std::min(t.worst_own, own);
   }
   return t;
 }

@@ -108,6 +108,65 @@ TEST(TangledRegions, UntanglesFoldsOfAFlatGrid) {
   }
 }
 
+// A fold between two curves: the vertices of columns 10 and 11 slide along the vertical lines
+// x = 10 and x = 11 (as on feature curves), and one of them is pushed past its neighbour on
+// its line, turning the quads at it over — every corner of those quads lies on a curve, so
+// Tutte's embedding, which moves only free vertices, cannot help; the descent slides them
+// back. Every vertex stays on its line, and the fold is undone.
+TEST(TangledRegions, UntanglesAFoldAlongCurves) {
+  Grid g = grid(20);
+  const auto column = [&g](int v) { return v % (g.n + 1); };
+  const auto on_curve = [&](int v) { return g.inside(v) && (column(v) == 10 || column(v) == 11); };
+  Vec3& pushed = g.mesh.vertices[g.id(10, 9)];
+  pushed[1] += 1.5;
+  ASSERT_GT(count_inverted(g.mesh), 0);
+  TangledRegionInput input = input_for(g, [](const std::vector<int>&) {});
+  input.project = [&](int v, const Vec3& p) {
+    return on_curve(v) ? Vec3{double(column(v)), p[1], 0} : Vec3{p[0], p[1], 0};
+  };
+  input.freedom = [&](int v) {
+    if (!g.inside(v)) return TangledRegionInput::Freedom::kPinned;
+    return on_curve(v) ? TangledRegionInput::Freedom::kOnCurve : TangledRegionInput::Freedom::kFree;
+  };
+  std::vector<int> all(g.mesh.vertices.size());
+  for (size_t v = 0; v < all.size(); ++v) all[v] = int(v);
+  const TangledRegionReport report = reembed_tangled_regions(input, all);
+  EXPECT_EQ(report.inverted_after, 0);
+  EXPECT_EQ(count_inverted(g.mesh), 0);
+  for (size_t v = 0; v < all.size(); ++v)
+    if (on_curve(int(v))) {
+      EXPECT_EQ(g.mesh.vertices[v][0], double(column(int(v)))) << v;
+    }
+}
+
+// The positions before smoothing, where given, are the last way out: here every vertex is on
+// a curve that holds it where it is (its projection), so neither Tutte's embedding nor the
+// descent moves anything, and smoothing is a no-op; but where the vertices were placed, no
+// quad was folded.
+TEST(TangledRegions, GoesBackToThePlacedPositions) {
+  Grid g = grid(12);
+  const std::vector<Vec3> placed = g.mesh.vertices;
+  const int folded = g.id(6, 6);
+  g.mesh.vertices[folded][0] += 1.6;
+  const std::vector<Vec3> stuck = g.mesh.vertices;
+  TangledRegionInput input = input_for(g, [](const std::vector<int>&) {});
+  input.project = [&](int v, const Vec3&) { return stuck[v]; };
+  input.freedom = [&](int v) {
+    return g.inside(v) ? TangledRegionInput::Freedom::kOnCurve
+                       : TangledRegionInput::Freedom::kPinned;
+  };
+  std::vector<int> all(g.mesh.vertices.size());
+  for (size_t v = 0; v < all.size(); ++v) all[v] = int(v);
+  const TangledRegionReport stays = reembed_tangled_regions(input, all);
+  EXPECT_GT(stays.inverted_after, 0);
+  EXPECT_EQ(g.mesh.vertices, stuck);
+
+  input.placed = &placed;
+  const TangledRegionReport back = reembed_tangled_regions(input, all);
+  EXPECT_EQ(back.inverted_after, 0);
+  EXPECT_EQ(g.mesh.vertices[folded], placed[folded]);
+}
+
 // Where the new positions are worse (here a smoothing that throws the region's vertices
 // about), the old ones are restored exactly; vertices not given never move.
 TEST(TangledRegions, KeepsTheOldPositionsWhereTheNewOnesAreWorse) {
