@@ -22,6 +22,7 @@
 #include "bench_util.hpp"
 #include "bimdf/generate.hpp"
 #include "bimdf/io.hpp"
+#include "generality_bench.hpp"
 #include "layout_bench.hpp"
 #include "markdown_table.hpp"
 #include "milp_model.hpp"
@@ -144,21 +145,28 @@ int main(int argc, char** argv) {
   app.add_flag("--only-requantize", only_requantize,
                "Run just the requantize benchmark on the --layouts folder (replaces the "
                "<!-- requantize:begin/end --> section)");
+  bool only_generality = false;
+  app.add_flag("--only-generality", only_generality,
+               "Run just the generality benchmark: matchings, directed min-cost flows and "
+               "b-matchings as Bi-MDF against LEMON's dedicated algorithms (replaces the "
+               "<!-- generality:begin/end --> section)");
   CLI11_PARSE(app, argc, argv);
+  // Prints a section and puts it into the Markdown file; false if the file lacks its markers.
+  const auto write_section = [&](const std::string& name, const std::string& body) {
+    std::cout << "\n" << body;
+    if (md_path.empty() || replace_section(md_path, name, body)) return true;
+    std::cerr << md_path << ": no <!-- " << name << ":begin --> ... <!-- " << name
+              << ":end --> section\n";
+    return false;
+  };
   if (only_requantize) {
     if (layouts_dir.empty()) {
       std::cerr << "--only-requantize needs --layouts\n";
       return 2;
     }
-    const std::string section = benchmark_requantize(cli, layouts_dir, repeats);
-    std::cout << section;
-    if (!md_path.empty() && !replace_section(md_path, "requantize", section)) {
-      std::cerr << md_path
-                << ": no <!-- requantize:begin --> ... <!-- requantize:end --> section\n";
-      return 2;
-    }
-    return 0;
+    return write_section("requantize", benchmark_requantize(cli, layouts_dir, repeats)) ? 0 : 2;
   }
+  if (only_generality) return write_section("generality", benchmark_generality(repeats)) ? 0 : 2;
   if (only_layouts) {
     instances_dir.clear();
     scaling.clear();
@@ -349,24 +357,13 @@ int main(int argc, char** argv) {
            << fmt(milp_time[rows[i].instance.name], 1) << " | " << fmt(rows[i].solve_s * 1e3)
            << " |\n";
   }
-  std::cout << md.str();
-  if (!rows.empty() && !md_path.empty() && !replace_section(md_path, "bench", md.str())) {
-    std::cerr << md_path << ": no <!-- bench:begin --> ... <!-- bench:end --> section\n";
-    return 2;
+  if (!rows.empty()) {
+    if (!write_section("bench", md.str())) return 2;
+    if (!write_section("generality", benchmark_generality(repeats))) return 2;
   }
   if (!layouts_dir.empty()) {
-    const std::string section = benchmark_layouts(cli, layouts_dir, repeats);
-    std::cout << "\n" << section;
-    if (!md_path.empty() && !replace_section(md_path, "quantize", section)) {
-      std::cerr << md_path << ": no <!-- quantize:begin --> ... <!-- quantize:end --> section\n";
-      return 2;
-    }
-    const std::string remesh = benchmark_remesh(cli, layouts_dir, repeats);
-    std::cout << "\n" << remesh;
-    if (!md_path.empty() && !replace_section(md_path, "remesh", remesh)) {
-      std::cerr << md_path << ": no <!-- remesh:begin --> ... <!-- remesh:end --> section\n";
-      return 2;
-    }
+    if (!write_section("quantize", benchmark_layouts(cli, layouts_dir, repeats))) return 2;
+    if (!write_section("remesh", benchmark_remesh(cli, layouts_dir, repeats))) return 2;
   }
   return 0;
 }

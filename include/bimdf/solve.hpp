@@ -76,7 +76,9 @@ struct SolveProgress {
   // would count in Solution::objective.
   double objective = 0;
   // RefinementRound: whether the round lowered the objective. A round that does not ends the
-  // component's refinement: its flow is then proven optimal (paper Thm 3.8).
+  // component's refinement: its flow is then proven optimal (paper Thm 3.8). A component that
+  // its dedicated algorithm solves outright (a directed min-cost flow or a perfect matching,
+  // see Solver) reports its optimum as Approximated, then one such round.
   bool improved = false;
   double elapsed_s = 0;  // wall-clock seconds since run() started
 };
@@ -92,9 +94,16 @@ class SolverError : public std::runtime_error {
 // round a minimum-cost circulation of throughflow at most 2 around the current flow, found as a
 // maximum-weight perfect matching (our blossom solver) on the arcs that the round's LP relaxation
 // cannot exclude — until a round no longer lowers the objective, which proves optimality (paper
-// Thm 3.8). Components are solved independently, on `threads` workers; the flow does not
-// depend on the thread count. When a limit stops refinement first, a lower bound from the LP
-// relaxation of the whole problem says how far from optimal the flow can be.
+// Thm 3.8). Two kinds of component skip both and go to the algorithm they deserve (the
+// statistic "approximation_path", shown by `bimdf solve -v`, names them): one whose nodes can
+// be signed so that every edge has a head and a tail after negating the negative nodes' rows
+// (a 2-colourable sign graph, no loops) and whose costs are all linear is a directed min-cost
+// flow — one network simplex; one whose edges all join two nodes with two heads (or all with
+// two tails), bounds [0, 1], every demand 1 (or −1), is a perfect matching — LEMON's blossom
+// algorithm (src/solve/special_structure.hpp). Components are solved independently, on `threads`
+// workers; the flow does not depend on the thread count. When a limit stops refinement first, a
+// lower bound from the LP relaxation of the whole problem says how far from optimal the flow can
+// be.
 //
 //   bimdf::Solver solver(problem);
 //   solver.threads(2).time_limit(10.0);
