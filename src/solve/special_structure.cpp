@@ -1,5 +1,6 @@
 #include "solve/special_structure.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <queue>
 
@@ -66,41 +67,105 @@ std::optional<std::vector<int>> orientation(const Problem& p) {
   return sign;
 }
 
-std::optional<std::vector<int64_t>> solve_as_directed_flow(const Problem& p) {
-  std::vector<double> slope(p.num_edges());
-  for (int e = 0; e < p.num_edges(); ++e) {
-    const std::optional<double> s = linear_slope(p.cost[e]);
-    if (!s || p.lower[e] == -kInfinity) return std::nullopt;
-    slope[e] = *s;
-  }
-  const std::optional<std::vector<int>> sign = orientation(p);
-  if (!sign) return std::nullopt;
-  // x = lower + y with 0 ≤ y ≤ upper − lower; node v's row times s(v) reads
-  // inflow(y) − outflow(y) = s(v)·b(v) − Σ s(v)·σ·lower, and LEMON's supply is its negation.
+// A curved cost is modelled exactly on a window of flow values around its minimizer, by one
+// unit arc per value, and below and above the window by one arc each whose per-unit cost is
+// the cost's step at the window's edge — by convexity never above the cost there. A window
+// starts kHalfWindow values to either side, grows where the optimum lands outside it, and
+// stops growing at kMaxWindow values (then the general path takes over).
+constexpr int64_t kHalfWindow = 4;
+constexpr int64_t kMaxWindow = 4096;
+constexpr int kMaxWidenings = 16;
+
+struct Window {
+  int64_t from = 0, to = 0;  // flow values where the arcs give the cost exactly
+};
+
+// The directed network of `p` under the node signs `sign`, with each curved edge's cost
+// modelled on its window (linear edges: one arc over the whole bound range, `windows` unused).
+// Arcs of edge e are listed in arcs_of[e], as (arc, +1) where their flow adds to the edge's
+// and (arc, −1) where it subtracts.
+DirectedMcf directed_network(const Problem& p, const std::vector<int>& sign,
+                             const std::vector<std::optional<double>>& slope,
+                             const std::vector<Window>& windows,
+                             std::vector<std::vector<std::pair<int, int>>>& arcs_of) {
+  // x = base + (forward arcs' flow) − (backward arc's flow); node v's row times s(v) reads
+  // inflow − outflow = s(v)·b(v), and LEMON's supply is its negation.
   DirectedMcf mcf;
   mcf.supply.resize(p.num_nodes());
-  for (int v = 0; v < p.num_nodes(); ++v) mcf.supply[v] = -(*sign)[v] * p.demand[v];
+  for (int v = 0; v < p.num_nodes(); ++v) mcf.supply[v] = -sign[v] * p.demand[v];
+  arcs_of.assign(p.num_edges(), {});
   for (int e = 0; e < p.num_edges(); ++e) {
     const End& a = p.end_a[e];
     const End& b = p.end_b[e];
-    const bool a_is_tail = (*sign)[a.node] * a.sign() < 0;
-    mcf.source.push_back(a_is_tail ? a.node : b.node);
-    mcf.target.push_back(a_is_tail ? b.node : a.node);
-    mcf.capacity.push_back(p.upper[e] == kInfinity ? INT64_MAX : p.upper[e] - p.lower[e]);
-    mcf.cost.push_back(slope[e]);
-    // The lower bound's flow leaves the source and enters the target.
-    mcf.supply[mcf.source.back()] -= p.lower[e];
-    mcf.supply[mcf.target.back()] += p.lower[e];
+    const bool a_is_tail = sign[a.node] * a.sign() < 0;
+    const int source = a_is_tail ? a.node : b.node, target = a_is_tail ? b.node : a.node;
+    const auto arc = [&](bool forward, int64_t capacity, double cost) {
+      arcs_of[e].push_back({mcf.num_arcs(), forward ? 1 : -1});
+      mcf.source.push_back(forward ? source : target);
+      mcf.target.push_back(forward ? target : source);
+      mcf.capacity.push_back(capacity);
+      mcf.cost.push_back(cost);
+    };
+    const Cost& c = p.cost[e];
+    const int64_t base = slope[e] ? p.lower[e] : windows[e].from;
+    // The base flow leaves the source and enters the target.
+    mcf.supply[source] -= base;
+    mcf.supply[target] += base;
+    if (slope[e]) {
+      arc(true, p.upper[e] == kInfinity ? INT64_MAX : p.upper[e] - p.lower[e], *slope[e]);
+      continue;
+    }
+    const Window& w = windows[e];
+    for (int64_t x = w.from; x < w.to; ++x) arc(true, 1, c(x + 1) - c(x));
+    if (w.to < p.upper[e])
+      arc(true, p.upper[e] == kInfinity ? INT64_MAX : p.upper[e] - w.to, c(w.to + 1) - c(w.to));
+    if (w.from > p.lower[e])
+      arc(false, p.lower[e] == -kInfinity ? INT64_MAX : w.from - p.lower[e],
+          c(w.from - 1) - c(w.from));
   }
-  // LEMON reads unbalanced supplies as inequalities; they are infeasible here.
-  int64_t total_supply = 0;
-  for (int64_t s : mcf.supply) total_supply += s;
-  if (total_supply != 0) return std::nullopt;
-  const MinCostFlowResult r = solve_min_cost_flow(mcf);
-  if (r.status != MinCostFlowStatus::Optimal) return std::nullopt;
-  std::vector<int64_t> flow(p.num_edges());
-  for (int e = 0; e < p.num_edges(); ++e) flow[e] = p.lower[e] + r.flow[e];
-  return flow;
+  return mcf;
+}
+
+std::optional<std::vector<int64_t>> solve_as_directed_flow(const Problem& p) {
+  const std::optional<std::vector<int>> sign = orientation(p);
+  if (!sign) return std::nullopt;
+  std::vector<std::optional<double>> slope(p.num_edges());
+  std::vector<Window> windows(p.num_edges());
+  for (int e = 0; e < p.num_edges(); ++e) {
+    slope[e] = linear_slope(p.cost[e]);
+    if (slope[e] && p.lower[e] == -kInfinity) return std::nullopt;
+    if (slope[e]) continue;
+    const int64_t centre = p.cost[e].argmin(p.lower[e], p.upper[e]);
+    windows[e] = {std::max(p.lower[e], centre - kHalfWindow),
+                  std::min(p.upper[e], centre + kHalfWindow)};
+  }
+  std::vector<std::vector<std::pair<int, int>>> arcs_of;
+  for (int widening = 0; widening < kMaxWidenings; ++widening) {
+    const DirectedMcf mcf = directed_network(p, *sign, slope, windows, arcs_of);
+    // LEMON reads unbalanced supplies as inequalities; they are infeasible here.
+    int64_t total_supply = 0;
+    for (int64_t s : mcf.supply) total_supply += s;
+    if (total_supply != 0) return std::nullopt;
+    const MinCostFlowResult r = solve_min_cost_flow(mcf);
+    if (r.status != MinCostFlowStatus::Optimal) return std::nullopt;
+    std::vector<int64_t> flow(p.num_edges());
+    bool exact = true;
+    for (int e = 0; e < p.num_edges(); ++e) {
+      flow[e] = slope[e] ? p.lower[e] : windows[e].from;
+      for (const auto& [arc, direction] : arcs_of[e]) flow[e] += direction * r.flow[arc];
+      if (slope[e]) continue;
+      // The arcs' cost is below the true one everywhere and equal on [from − 1, to + 1]: an
+      // optimum there for every edge is the problem's optimum.
+      Window& w = windows[e];
+      if (flow[e] >= w.from - 1 && flow[e] <= w.to + 1) continue;
+      exact = false;
+      w = {std::max(p.lower[e], std::min(w.from, flow[e] - kHalfWindow)),
+           std::min(p.upper[e], std::max(w.to, flow[e] + kHalfWindow))};
+      if (w.to - w.from > kMaxWindow) return std::nullopt;
+    }
+    if (exact) return flow;
+  }
+  return std::nullopt;
 }
 
 std::optional<std::vector<int64_t>> solve_as_perfect_matching(const Problem& p) {
