@@ -73,6 +73,7 @@ void expect_routed_directed_flows(uint64_t seed, bool curved) {
     EXPECT_TRUE(check_flow(p, s.flow).feasible()) << i;
     EXPECT_NEAR(s.objective, milp.objective, 1e-6 * std::max(1.0, std::fabs(milp.objective))) << i;
     EXPECT_EQ(path_of(s), "directed min-cost flow (1 component)") << i;
+    EXPECT_EQ(std::get<int64_t>(s.stats.at("fallbacks")), 0) << i;  // no cover failed
   }
 }
 
