@@ -97,8 +97,9 @@ class SolverError : public std::runtime_error {
 // Thm 3.8). Two kinds of component skip both and go to the algorithm they deserve (the
 // statistic "approximation_path", shown by `bimdf solve -v`, names them): one whose nodes can
 // be signed so that every edge has a head and a tail after negating the negative nodes' rows
-// (a 2-colourable sign graph, no loops) is a directed min-cost flow — network simplex, on
-// windows of unit arcs around curved costs' minima; one whose edges all join two nodes with two
+// (a 2-colourable sign graph, no loops; outer edges are arcs to and from the outside) is a
+// directed min-cost flow — network simplex, on windows of unit arcs around curved costs'
+// minima; one whose edges all join two nodes with two
 // heads (or all with two tails), bounds [0, 1], every demand 1 (or −1), is a perfect matching —
 // LEMON's blossom algorithm (src/solve/special_structure.hpp). Components are solved independently,
 // on `threads` workers; the flow does not depend on the thread count. When a limit stops refinement

@@ -23,14 +23,19 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   r.edges_solved = p.num_edges();
 
   // A component that a dedicated algorithm solves outright (a directed min-cost flow or a
-  // perfect matching written as Bi-MDF) skips the double cover and refinement.
+  // perfect matching written as Bi-MDF) skips the double cover and refinement. Tried as given
+  // (outer edges are sources and sinks of a directed flow, but their elimination adds a loop)
+  // and simplified (fixed edges gone into the demands can leave a perfect matching).
   if (config.exact) {
     t = std::chrono::steady_clock::now();
-    if (std::optional<SpecialStructureSolution> special = solve_special_structure(p)) {
+    std::optional<SpecialStructureSolution> special = solve_special_structure(component);
+    if (!special && (special = solve_special_structure(p)))
+      special->flow = simplified.lift(std::move(special->flow));
+    if (special) {
       r.time_mcf_s = seconds_since(t);
       r.path = special->path;
       r.status = SolveStatus::Optimal;
-      r.flow = simplified.lift(std::move(special->flow));
+      r.flow = std::move(special->flow);
       r.approximate_objective = objective(component, r.flow);
       if (config.lower_bound) r.lower_bound = r.approximate_objective;
       // Reported as an approximation that one round proves optimal, as refinement would.

@@ -32,12 +32,14 @@ std::optional<double> linear_slope(const Cost& cost) {
   }
 }
 
-// Node signs s(v) = ±1 under which every edge has one end with s·σ = +1 and one with −1, or
-// nullopt when there are none (an odd cycle of the sign graph, a loop or an outer edge).
+// Node signs s(v) = ±1 under which every two-ended edge has one end with s·σ = +1 and one with
+// −1, or nullopt when there are none (an odd cycle of the sign graph, or a loop). Outer edges
+// constrain nothing: their one end may be either.
 std::optional<std::vector<int>> orientation(const Problem& p) {
   std::vector<std::vector<int>> edges_at(p.num_nodes());
   for (int e = 0; e < p.num_edges(); ++e) {
-    if (p.end_b[e].node == kNoNode || p.end_a[e].node == p.end_b[e].node) return std::nullopt;
+    if (p.end_b[e].node == kNoNode) continue;
+    if (p.end_a[e].node == p.end_b[e].node) return std::nullopt;
     edges_at[p.end_a[e].node].push_back(e);
     edges_at[p.end_b[e].node].push_back(e);
   }
@@ -89,16 +91,21 @@ DirectedMcf directed_network(const Problem& p, const std::vector<int>& sign,
                              const std::vector<Window>& windows,
                              std::vector<std::vector<std::pair<int, int>>>& arcs_of) {
   // x = base + (forward arcs' flow) − (backward arc's flow); node v's row times s(v) reads
-  // inflow − outflow = s(v)·b(v), and LEMON's supply is its negation.
+  // inflow − outflow = s(v)·b(v), and LEMON's supply is its negation. Outer edges join an
+  // extra node, the outside, whose supply balances the others'.
   DirectedMcf mcf;
-  mcf.supply.resize(p.num_nodes());
+  const int outside = p.num_nodes();
+  mcf.supply.resize(p.num_nodes() + 1);
   for (int v = 0; v < p.num_nodes(); ++v) mcf.supply[v] = -sign[v] * p.demand[v];
   arcs_of.assign(p.num_edges(), {});
+  bool any_outer = false;
   for (int e = 0; e < p.num_edges(); ++e) {
     const End& a = p.end_a[e];
     const End& b = p.end_b[e];
     const bool a_is_tail = sign[a.node] * a.sign() < 0;
-    const int source = a_is_tail ? a.node : b.node, target = a_is_tail ? b.node : a.node;
+    const int other = b.node == kNoNode ? outside : b.node;
+    any_outer = any_outer || b.node == kNoNode;
+    const int source = a_is_tail ? a.node : other, target = a_is_tail ? other : a.node;
     const auto arc = [&](bool forward, int64_t capacity, double cost) {
       arcs_of[e].push_back({mcf.num_arcs(), forward ? 1 : -1});
       mcf.source.push_back(forward ? source : target);
@@ -122,6 +129,10 @@ DirectedMcf directed_network(const Problem& p, const std::vector<int>& sign,
     if (w.from > p.lower[e])
       arc(false, p.lower[e] == -kInfinity ? INT64_MAX : w.from - p.lower[e],
           c(w.from - 1) - c(w.from));
+  }
+  if (any_outer) {
+    mcf.supply[outside] = 0;
+    for (int v = 0; v < p.num_nodes(); ++v) mcf.supply[outside] -= mcf.supply[v];
   }
   return mcf;
 }

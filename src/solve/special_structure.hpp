@@ -36,8 +36,9 @@ struct SpecialStructureSolution {
   std::vector<int64_t> flow;  // per edge of the problem
 };
 
-// The optimal flow of `problem` (no outer edges) by the dedicated algorithm of its structure,
-// or nullopt when it has none above or that algorithm found no optimum.
+// The optimal flow of `problem` by the dedicated algorithm of its structure, or nullopt when it
+// has none above or that algorithm found no optimum. Outer edges are arcs to and from the
+// outside of a directed flow (a perfect matching has none).
 std::optional<SpecialStructureSolution> solve_special_structure(const Problem& problem);
 
 }  // namespace bimdf::detail

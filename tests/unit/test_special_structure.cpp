@@ -58,13 +58,24 @@ Problem directed_network(std::mt19937_64& rng, int n, int m, const std::vector<c
 
 // 40 random directed networks with random rows negated: optimal, as the oracle says, and
 // solved as one directed min-cost flow.
-void expect_routed_directed_flows(uint64_t seed, bool curved) {
+// With `outer`, three outer edges (sources and sinks of either sign, bounds [0, 4], linear or
+// quadratic costs) are added, and a fourth that must bring node 0 the 2 units added to its
+// demand.
+void expect_routed_directed_flows(uint64_t seed, bool curved, bool outer = false) {
   std::mt19937_64 rng(seed);
   for (int i = 0; i < 40; ++i) {
     const int n = 4 + i % 9;
     std::vector<char> negated(n);
     for (char& x : negated) x = static_cast<char>(rng() % 2);
-    const Problem p = directed_network(rng, n, 2 * n, negated, curved);
+    Problem p = directed_network(rng, n, 2 * n, negated, curved);
+    for (int k = 0; outer && k < 3; ++k) {
+      const Cost cost = k == 2 ? Cost::quad_deviation(3, 1) : Cost::linear(k == 0 ? -7 : 2);
+      p.add_edge({static_cast<int>(rng() % n), rng() % 2 == 0}, std::nullopt, 0, 4, cost);
+    }
+    if (outer) {  // node 0 needs 2 more from outside: the outside's supply is not 0
+      p.demand[0] += 2;
+      p.add_edge({0, true}, std::nullopt, 0, 4, Cost::linear(1));
+    }
     ASSERT_FALSE(validate(p)) << i;
     const Solution s = solve_exactly(p);
     const testing::MilpResult milp = testing::solve_milp(p, -40, 200);
@@ -86,6 +97,12 @@ TEST(SpecialStructure, DirectedFlowsWithNegatedRowsMatchTheMilpOracle) {
 // the exact optimum.
 TEST(SpecialStructure, DirectedFlowsWithCurvedCostsMatchTheMilpOracle) {
   expect_routed_directed_flows(13, true);
+}
+
+// Outer edges are arcs to and from the outside: routed as given, before their elimination
+// adds a loop.
+TEST(SpecialStructure, DirectedFlowsWithOuterEdgesMatchTheMilpOracle) {
+  expect_routed_directed_flows(17, true, true);
 }
 
 // A random graph with a planted perfect matching (pairs 2k, 2k + 1) among other edges.
