@@ -34,8 +34,8 @@ class CornerEnergy {
     for (size_t p = 0; p < region.points.size(); ++p)
       if (region.movable[p]) slot_[p] = num_movable_++;
     for (const Vec3& n : region.normals) {
-      frames_.push_back(frame(n));
-      frames_.push_back(frame(n));
+      frames_.push_back(plane_frame(n));
+      frames_.push_back(plane_frame(n));
     }
   }
 
@@ -47,7 +47,7 @@ class CornerEnergy {
         n = along(n, 1,
                   cross(position(x, region_.quads[f][i], 1),
                         position(x, region_.quads[f][(i + 1) % 4], 1)));
-      if (norm(n) > 0) frames_[2 * f + 1] = frame(normalized(n));
+      if (norm(n) > 0) frames_[2 * f + 1] = plane_frame(normalized(n));
     }
   }
 
@@ -110,12 +110,6 @@ class CornerEnergy {
 
  private:
   using Frame = std::array<Vec3, 2>;
-
-  static Frame frame(const Vec3& n) {
-    const Vec3 axis = std::fabs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    const Vec3 t1 = normalized(cross(n, axis));
-    return {t1, cross(n, t1)};
-  }
 
   Vec3 position(const Vector& x, size_t p, double scale) const {
     if (slot_[p] < 0) return along({0, 0, 0}, scale / length_, region_.points[p]);

@@ -96,10 +96,7 @@ void place_inner_vertices(const TangledRegionInput& in, const std::vector<int>& 
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
   for (int v : corners) centre = along(centre, 1.0 / corners.size(), mesh.vertices[v]);
   if (!(norm(normal) > 0)) return;
-  normal = normalized(normal);
-  // Any axis not along the normal gives the plane's frame.
-  const Vec3 axis = std::fabs(normal[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-  const Vec3 t1 = normalized(cross(normal, axis)), t2 = cross(normal, t1);
+  const auto [t1, t2] = plane_frame(normalized(normal));
   // Plane coordinates of every corner; the inner ones are then relaxed to their neighbours'
   // mean (all their neighbours are corners of the region: their quads are in it).
   std::vector<std::array<double, 2>> uv(corners.size());
@@ -216,6 +213,9 @@ TangledRegionReport reembed_tangled_regions(const TangledRegionInput& in,
           if (!in.placed) break;
           for (int v : inner) mesh.vertices[v] = (*in.placed)[v];
         } else {
+          // Without free vertices Tutte's embedding moves nothing: starting the descent from it
+          // would repeat the descent from the current positions.
+          if (placement == Placement::kTutteThenDescent && free_inner.empty()) continue;
           if (placement != Placement::kDescent) place_inner_vertices(in, quads, free_inner);
           if (placement != Placement::kTutte) descend_untangling(in, quads, inner);
           in.smooth(inner);

@@ -27,6 +27,15 @@ inline Vec3 normalized(const Vec3& a) {
   return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
 }
 
+// An orthonormal frame (t1, t2) of the plane with unit normal n, oriented so that t1 × t2 = n:
+// counter-clockwise about n reads counter-clockwise in (t1, t2) coordinates. t1 is n × x̂, or
+// n × ŷ where n is close to x̂.
+inline std::array<Vec3, 2> plane_frame(const Vec3& n) {
+  const Vec3 axis = std::fabs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  const Vec3 t1 = normalized(cross(n, axis));
+  return {t1, cross(n, t1)};
+}
+
 // The (not normalized) normal of triangle f, counter-clockwise.
 inline Vec3 triangle_normal(const TriangleMesh& mesh, int f) {
   const auto& t = mesh.faces[f];
