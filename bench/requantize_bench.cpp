@@ -30,6 +30,16 @@ int count_all(const json& by_valence) {
   return n;
 }
 
+// The table's columns (see the header row below).
+constexpr int kColumns = 20;
+
+// A row for a run that failed: its layout, setting, FAILED, the other cells empty.
+std::string failed_row(const std::string& mesh, const std::string& setting) {
+  std::string row = "| " + mesh + " | " + setting + " | FAILED |";
+  for (int c = 3; c < kColumns; ++c) row += " |";
+  return row + "\n";
+}
+
 }  // namespace
 
 std::string benchmark_requantize(const std::string& cli, const std::string& dir, int repeats) {
@@ -52,14 +62,17 @@ std::string benchmark_requantize(const std::string& cli, const std::string& dir,
      << "`. Each shared layout is remeshed (`bimdf remesh LAYOUT.obj -o IN.obj`), then "
         "`bimdf requantize IN.obj -o OUT.obj` runs at each setting. quads: output (target: "
         "input / F² at `--scale F`). sing.: singular vertices in → out (same valence "
-        "multiset: =). BC: base complex faces in → out. SJ: scaled Jacobian. Times in ms "
+        "multiset: =). BC: base complex faces in → out. SJ: scaled Jacobian; degenerate: quads "
+        "with corners merged or a scaled Jacobian of exactly 0 (not counted as inverted). Times in "
+        "ms "
         "(median of the runs): trace, quantize (model + exact solve), collapse, smoothing, "
         "total.\n\n";
   md << "| layout | setting | status | T-mesh patches / arcs | zero arcs | quads in | quads | vs "
-        "target | sing. | BC | SJ min | SJ mean | SJ p5 | inverted | trace | quantize | "
-        "collapse | smoothing | total |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "target | sing. | BC | SJ min | SJ mean | SJ p5 | inverted | degenerate | trace | "
+        "quantize | collapse | smoothing | total |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   int runs = 0, failures = 0, singularity_changes = 0, inverted_total = 0, bc_larger = 0;
+  int degenerate_total = 0;
   double worst_quads = 0;
   std::vector<double> bc_reduction;
   for (const LayoutReference& ref : refs) {
@@ -69,7 +82,7 @@ std::string benchmark_requantize(const std::string& cli, const std::string& dir,
     try {
       run_cli(cli, {"remesh", "--json", "-o", in, obj});
     } catch (const std::exception& e) {
-      md << "| " << ref.mesh << " | remesh | FAILED | | | | | | | | | | | | | | | | |\n";
+      md << failed_row(ref.mesh, "remesh");
       ++failures;
       continue;
     }
@@ -82,8 +95,7 @@ std::string benchmark_requantize(const std::string& cli, const std::string& dir,
       try {
         run = median_run(cli, args, repeats);
       } catch (const std::exception& e) {
-        md << "| " << ref.mesh << " | " << s.name
-           << " | FAILED | | | | | | | | | | | | | | | | |\n";
+        md << failed_row(ref.mesh, s.name);
         ++failures;
         continue;
       }
@@ -97,6 +109,7 @@ std::string benchmark_requantize(const std::string& cli, const std::string& dir,
       const bool same_singularities = j["singularities_in"] == j["singularities_out"];
       singularity_changes += !same_singularities;
       inverted_total += m["inverted"].get<int>();
+      degenerate_total += m["degenerate"].get<int>();
       const int bc_in = j["base_complex_in"].get<int>(), bc_out = j["base_complex_out"].get<int>();
       if (s.coarse) {
         bc_reduction.push_back(1 - double(bc_out) / bc_in);
@@ -114,7 +127,7 @@ std::string benchmark_requantize(const std::string& cli, const std::string& dir,
          << " | " << fmt(m["scaled_jacobian"]["min"].get<double>()) << " | "
          << fmt(m["scaled_jacobian"]["mean"].get<double>()) << " | "
          << fmt(m["scaled_jacobian"]["p5"].get<double>()) << " | " << m["inverted"] << " | "
-         << fmt(1e3 * t["trace_s"].get<double>(), 1) << " | "
+         << m["degenerate"] << " | " << fmt(1e3 * t["trace_s"].get<double>(), 1) << " | "
          << fmt(1e3 * (t["model_s"].get<double>() + t["solve_s"].get<double>()), 1) << " | "
          << fmt(1e3 * t["collapse_s"].get<double>(), 1) << " | "
          << fmt(1e3 * t["smoothing_s"].get<double>(), 1) << " | " << fmt(1e3 * run.seconds, 1)
@@ -127,8 +140,9 @@ std::string benchmark_requantize(const std::string& cli, const std::string& dir,
      << runs << " runs, " << failures << " failed; largest quad-count deviation from "
      << "the target " << fmt(100 * worst_quads, 1) << "% (scales 0.5, 1, 2); "
      << singularity_changes << " runs changed the singularities; " << inverted_total
-     << " inverted quads in all; `--coarse`: base complex larger than the input's on " << bc_larger
-     << ", median reduction "
+     << " inverted and " << degenerate_total
+     << " degenerate quads in all; `--coarse`: base complex larger than the input's on "
+     << bc_larger << ", median reduction "
      << (bc_reduction.empty() ? std::string("–")
                               : fmt(100 * bc_reduction[bc_reduction.size() / 2], 1) + "%")
      << ".\n";

@@ -105,6 +105,11 @@ void SurfaceSmoother::polish(const SmoothingOptions& options, const std::vector<
   run(options, &vertices, Phase::kPolish);
 }
 
+bool SurfaceSmoother::can_move(int v) const {
+  const Setup& s = *setup_;
+  return (!s.charts[v].empty() || s.curve[v] >= 0) && !s.neighbours[v].empty();
+}
+
 void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int>* only,
                           Phase phase, const std::vector<std::array<double, 3>>* placed) {
   if ((phase == Phase::kPolish ? options.quality_rounds : options.iterations) <= 0) return;
@@ -221,9 +226,7 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     }
     return best.distance >= 0 ? best.point : p;
   };
-  const auto movable = [&](int v) {
-    return (!charts[v].empty() || curve[v] >= 0) && !neighbours[v].empty();
-  };
+  const auto movable = [&](int v) { return can_move(v); };
   // Positions around v worth trying where its quads are bad (before projection): samples of
   // its tangent plane, and the exact best position for its quads' corner areas and half-way
   // there.

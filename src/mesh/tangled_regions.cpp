@@ -37,6 +37,9 @@ constexpr double kFlat = 0.01;
 // metrics.hpp reports), how many against either, the worst scaled Jacobian against either and
 // against their own normal.
 struct Tangle {
+  // Degenerate quads (corners merged, see quad_quality.hpp) count as inverted against their
+  // own normal: their scaled Jacobian reads 0, so a placement that squeezes a fold into a
+  // point would otherwise count as having righted it.
   int inverted_own = 0;
   int inverted = 0;
   double worst = 1;
@@ -56,7 +59,7 @@ Tangle tangle(const TangledRegionInput& in, const std::vector<int>& quads) {
   Tangle t;
   for (int f : quads) {
     const auto [own, under] = in.quality(f);
-    t.inverted_own += own < 0;
+    t.inverted_own += own < 0 || degenerate(in.mesh, in.mesh.quads[f]);
     t.inverted += std::min(own, under) < 0;
     t.worst = std::min({t.worst, own, under});
     t.worst_own = std::min(t.worst_own, own);

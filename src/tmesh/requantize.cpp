@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -97,11 +98,21 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   // Calibrated again after every repair: the bounds a repair adds raise the quad count.
   const bool calibrate = options.target_quads > 0 && !quantize.coarse;
   const std::vector<double> base = tm.arc_target;
+  // What the last smoothed round left, restored if a pinned-quad repair makes the T-mesh
+  // infeasible (bounds of 2 can conflict with arcs fixed to 0).
+  std::optional<RequantizeResult> smoothed;
+  int smoothed_rounds = 0;
   for (;;) {
     r.quantization = calibrate ? calibrate_density(tm, base, r.incidence, quantize, options, r)
                                : quantize_tmesh(tm, r.incidence, quantize);
     r.time_quantize_s += t.lap();
-    if (r.quantization.arc_length.empty()) return r;
+    if (r.quantization.arc_length.empty()) {
+      if (!smoothed) return r;
+      const double time_quantize_s = r.time_quantize_s;
+      r = std::move(*smoothed);
+      r.time_quantize_s = time_quantize_s;
+      return r;
+    }
     // A border loop shorter than 3 is found on the lengths alone (and its collapse would be
     // refused): solve again before collapsing.
     if (add_border_loop_bounds(tm, r.incidence, r.quantization.arc_length,
@@ -117,14 +128,26 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                               r.collapsed, quantize.extra_constraints);
     const bool folded =
         add_valence_bounds(tm, r.quantization.arc_length, r.collapsed, quantize.extra_constraints);
-    if (!merged && !folded) break;
+    if (merged || folded) {
+      ++r.repair_rounds;
+      continue;
+    }
+    r.repair_constraints = quantize.extra_constraints;
+    if (!on_mesh) break;
+    const std::vector<int> stuck =
+        smooth_requantized(*mesh, tm, r.incidence, r.traced.feature_edges, r.traced.feature_corners,
+                           r.collapsed, options.smoothing);
+    r.time_smoothing_s += t.lap();
+    // Quads no smoothing can right: bound the quantization and smooth the new one, a few
+    // times at most (each round smooths the whole mesh again).
+    if (stuck.empty() || smoothed_rounds >= options.max_pinned_repairs) break;
+    MinOneConstraints bounds = quantize.extra_constraints;
+    if (!add_pinned_quad_bounds(tm, r.quantization.arc_length, r.collapsed, stuck, bounds)) break;
+    smoothed = r;
+    quantize.extra_constraints = std::move(bounds);
+    ++smoothed_rounds;
     ++r.repair_rounds;
   }
-  r.repair_constraints = quantize.extra_constraints;
-  if (on_mesh)
-    smooth_requantized(*mesh, tm, r.incidence, r.traced.feature_edges, r.traced.feature_corners,
-                       r.collapsed, options.smoothing);
-  r.time_smoothing_s = t.lap();
   return r;
 }
 

@@ -31,6 +31,12 @@ bool bound_arc(int a, MinOneConstraints& bounds) {
   bounds.arcs.push_back(a);
   return true;
 }
+bool bound_arc_two(int a, MinOneConstraints& bounds) {
+  if (std::find(bounds.arcs_two.begin(), bounds.arcs_two.end(), a) != bounds.arcs_two.end())
+    return false;
+  bounds.arcs_two.push_back(a);
+  return true;
+}
 bool bound_side(SideRef side, MinOneConstraints& bounds) {
   if (std::find(bounds.sides.begin(), bounds.sides.end(), side) != bounds.sides.end()) return false;
   bounds.sides.push_back(side);
@@ -161,10 +167,31 @@ bool add_border_loop_bounds(const TMesh& tm, const TMeshIncidence& incidence,
       if (length[a] == 0) added |= bound_arc(a, bounds);
     if (loop.size() == 2) {
       const int longer = tm.arc_target[loop[0]] >= tm.arc_target[loop[1]] ? loop[0] : loop[1];
-      if (std::find(bounds.arcs_two.begin(), bounds.arcs_two.end(), longer) ==
-          bounds.arcs_two.end())
-        bounds.arcs_two.push_back(longer), added = true;
+      added |= bound_arc_two(longer, bounds);
     }
+  }
+  return added;
+}
+
+bool add_pinned_quad_bounds(const TMesh& tm, const std::vector<int64_t>& length,
+                            const CollapsedMesh& collapsed, const std::vector<int>& stuck,
+                            MinOneConstraints& bounds) {
+  bool added = false;
+  for (int f : stuck) {
+    const auto& q = collapsed.mesh.quads[f];
+    // The arcs of length 1 that make one of the quad's edges: both ends lie on them.
+    int best = -1;
+    for (int k = 0; k < 4; ++k) {
+      const std::vector<int>& from = collapsed.origin[q[k]].arcs;
+      const std::vector<int>& to = collapsed.origin[q[(k + 1) % 4]].arcs;
+      for (int a : from) {
+        if (length[a] != 1 || std::find(to.begin(), to.end(), a) == to.end()) continue;
+        if (std::find(bounds.arcs_two.begin(), bounds.arcs_two.end(), a) != bounds.arcs_two.end())
+          continue;
+        if (best < 0 || tm.arc_target[a] > tm.arc_target[best]) best = a;
+      }
+    }
+    if (best >= 0) added |= bound_arc_two(best, bounds);
   }
   return added;
 }

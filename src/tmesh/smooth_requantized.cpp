@@ -14,6 +14,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "mesh/quad_quality.hpp"
 #include "mesh/smoothing.hpp"
 
 namespace bimdf::tmesh {
@@ -187,11 +188,12 @@ quant::Layout requantization_layout(const QuadMesh& input, const TMesh& tmesh,
   return layout;
 }
 
-void smooth_requantized(const QuadMesh& input, const TMesh& tmesh, const TMeshIncidence& incidence,
-                        const std::vector<std::array<int, 2>>& feature_edges,
-                        const std::vector<int>& feature_corners, CollapsedMesh& result,
-                        const quant::SmoothingOptions& options) {
-  if ((options.iterations <= 0 && options.quality_rounds <= 0) || !has_geometry(tmesh)) return;
+std::vector<int> smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
+                                    const TMeshIncidence& incidence,
+                                    const std::vector<std::array<int, 2>>& feature_edges,
+                                    const std::vector<int>& feature_corners, CollapsedMesh& result,
+                                    const quant::SmoothingOptions& options) {
+  if ((options.iterations <= 0 && options.quality_rounds <= 0) || !has_geometry(tmesh)) return {};
   const quant::Layout layout =
       requantization_layout(input, tmesh, incidence, feature_edges, feature_corners);
   // Curves are what SurfaceSmoother slides along: border subsides and those on features.
@@ -253,14 +255,24 @@ void smooth_requantized(const QuadMesh& input, const TMesh& tmesh, const TMeshIn
     vertex_charts[v] = o.patches;
   }
   const std::vector<int> moving = movable_vertices(t.mesh);
+  std::vector<int> stuck;
   {
     quant::SurfaceSmoother smoother(layout, t, &vertex_charts);
     const std::vector<Vec3> placed = t.mesh.vertices;
     smoother.run(options, moving);
     smoother.reembed_tangled(options, moving, &placed);
     smoother.polish(options, moving);
+    std::vector<char> moves(nv, 0);
+    for (int v : moving) moves[v] = smoother.can_move(v);
+    for (int f = 0; f < t.mesh.num_quads(); ++f) {
+      const auto& q = t.mesh.quads[f];
+      if (std::any_of(q.begin(), q.end(), [&](int v) { return moves[v]; })) continue;
+      if (!bimdf::detail::degenerate(t.mesh, q) && bimdf::detail::scaled_jacobian(t.mesh, q) < 0)
+        stuck.push_back(f);
+    }
   }
   result.mesh = std::move(t.mesh);
+  return stuck;
 }
 
 }  // namespace bimdf::tmesh

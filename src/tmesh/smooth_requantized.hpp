@@ -37,9 +37,14 @@ quant::Layout requantization_layout(const QuadMesh& input, const TMesh& tmesh,
 // move inverts a quad or makes the worst quad at a vertex worse (see SmoothingOptions);
 // the vertices of a quad alone at a straight border corner (~180°, forced by the input) stay.
 // Does nothing with 0 iterations or without patch grids, arc chains and mesh vertices.
-void smooth_requantized(const QuadMesh& input, const TMesh& tmesh, const TMeshIncidence& incidence,
-                        const std::vector<std::array<int, 2>>& feature_edges,
-                        const std::vector<int>& feature_corners, CollapsedMesh& result,
-                        const quant::SmoothingOptions& options);
+//
+// Returns the quads left inverted (against their own normal, not degenerate) whose four
+// corners all stay where they were put — pinned T-mesh vertices: no smoothing can right them,
+// only another quantization (add_pinned_quad_bounds, separation_repair.hpp).
+std::vector<int> smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
+                                    const TMeshIncidence& incidence,
+                                    const std::vector<std::array<int, 2>>& feature_edges,
+                                    const std::vector<int>& feature_corners, CollapsedMesh& result,
+                                    const quant::SmoothingOptions& options);
 
 }  // namespace bimdf::tmesh

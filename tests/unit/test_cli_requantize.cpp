@@ -10,7 +10,9 @@
 #include <tuple>
 
 #include "bimdf/metrics.hpp"
+#include "bimdf/tmesh/requantize.hpp"
 #include "cli_fixture.hpp"
+#include "mesh/quad_quality.hpp"
 #include "tmesh_fixtures.hpp"
 
 namespace bimdf::testing {
@@ -123,6 +125,38 @@ TEST_F(Requantize, SubdividedCubeCoarsensToSixPatches) {
     EXPECT_EQ(m.inverted, 0);
     EXPECT_EQ(m.base_complex_faces, 6);
   }
+}
+
+// Two valid quads of a strip bent back on itself (the plane z = 0), its four corners border
+// corners and so pinned. At --scale 2 the strip's long sides (2 edges) quantize to 1 and its
+// short ones (1 edge, target ½) to 1 for separation: one quad, the union of the two, whose
+// corners in that order are inverted (scaled Jacobian −0.51) and which no smoothing can move.
+// The pinned-quad repair bounds a long side by 2: the two quads come back, none inverted.
+TEST_F(Requantize, PinnedInvertedQuadSplitsInTwo) {
+  QuadMesh bent;
+  bent.vertices = {{0, 0, 0},    {1.3, 1.6, 0},  {0.2, 2.9, 0},
+                   {-0.6, 2, 0}, {0.1, 1.25, 0}, {0, 1, 0}};
+  bent.quads = {{0, 1, 4, 5}, {1, 2, 3, 4}};
+  for (const auto& q : bent.quads) ASSERT_GT(detail::scaled_jacobian(bent, q), 0.3);
+  // Without the repair: the one quad, inverted.
+  tmesh::RequantizeOptions options;
+  options.trace.density = 0.5;
+  options.max_pinned_repairs = 0;
+  const tmesh::RequantizeResult plain = tmesh::requantize(bent, options, "bent");
+  ASSERT_EQ(plain.collapsed.mesh.num_quads(), 1);
+  EXPECT_LT(detail::scaled_jacobian(plain.collapsed.mesh, plain.collapsed.mesh.quads[0]), -0.5);
+  EXPECT_EQ(plain.repair_rounds, 0);
+
+  const json j = requantize(bent, "--scale 2");
+  ASSERT_EQ(j["status"], "optimal");
+  EXPECT_EQ(j["quads"], 2);
+  EXPECT_EQ(j["repair_rounds"], 1);
+  EXPECT_EQ(j["repair_constraints"], 1);
+  const QuadMeshMetrics m = measure_quad_mesh(output());
+  EXPECT_EQ(m.faces, 2);
+  EXPECT_EQ(m.inverted, 0);
+  EXPECT_EQ(m.degenerate, 0);
+  EXPECT_GT(m.scaled_jacobian_min, 0.3);
 }
 
 TEST_F(Requantize, ThinStripCollapses) {

@@ -191,5 +191,24 @@ TEST(TangledRegions, KeepsTheOldPositionsWhereTheNewOnesAreWorse) {
   EXPECT_EQ(g.mesh.vertices, start.vertices);
 }
 
+// A smoothing that squeezes every vertex it may move into one point rights every fold in the
+// sense that no quad is inverted any more — they are all degenerate. Degenerate quads count
+// as inverted, so that is no better, and the old positions stay.
+TEST(TangledRegions, SqueezingAFoldIntoAPointIsNoUntangling) {
+  Grid g = grid(12);
+  g.mesh.vertices[g.id(6, 6)][0] += 1.6;
+  const QuadMesh start = g.mesh;
+  ASSERT_GT(count_inverted(start), 0);
+  const auto squeeze = [&](const std::vector<int>& vertices) {
+    for (int v : vertices) g.mesh.vertices[v] = {6, 6, 0};
+  };
+  std::vector<int> all(g.mesh.vertices.size());
+  for (size_t v = 0; v < all.size(); ++v) all[v] = int(v);
+  const TangledRegionReport squeezed = reembed_tangled_regions(input_for(g, squeeze), all);
+  EXPECT_GT(squeezed.regions, 0);
+  EXPECT_EQ(squeezed.kept, 0);
+  EXPECT_EQ(g.mesh.vertices, start.vertices);
+}
+
 }  // namespace
 }  // namespace bimdf::detail

@@ -61,7 +61,8 @@ struct MinOneConstraints {
   std::vector<int> arcs;
   std::vector<SideRef> sides;
   // Arcs whose length must be ≥ 2: the longer arc of a border loop of two arcs, which would
-  // otherwise close into a two-edge hole (separation repair, requantize.hpp).
+  // otherwise close into a two-edge hole, and an arc along a quad left inverted with every
+  // corner pinned, which then splits in two (separation repair, requantize.hpp).
   std::vector<int> arcs_two;
   int size() const { return static_cast<int>(arcs.size() + sides.size() + arcs_two.size()); }
 };

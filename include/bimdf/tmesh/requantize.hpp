@@ -33,6 +33,10 @@ struct RequantizeOptions {
   int calibration_solves = 8;
   double max_density_change = 2;
   double max_density_reach = 4;
+  // Pinned-quad repair: how many times at most a quantization is bounded again, and the mesh
+  // smoothed again, because smoothing left quads inverted whose corners are all pinned
+  // (requantize_tmesh). 0 turns it off.
+  int max_pinned_repairs = 2;
 };
 
 struct RequantizeResult {
@@ -85,7 +89,10 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 // min-one bound; when a seed keeps its place but not its valence (traces leaving it folded
 // together where a patch cornered there collapsed), every zero element at it gets one; a
 // border loop shorter than 3 edges (a hole with fewer than three seeds closing into two edges)
-// gets bounds that make it ≥ 3 (src/tmesh/separation_repair.hpp). Then the T-mesh is quantized
+// gets bounds that make it ≥ 3; and when smoothing leaves a quad inverted whose four corners
+// are all pinned (at most max_pinned_repairs times; the result before such a round is kept if
+// the bounds make the T-mesh infeasible), an arc along it of length 1 gets a bound of 2
+// (src/tmesh/separation_repair.hpp). Then the T-mesh is quantized
 // again — the lazy constraints the paper (§4.2.3) mentions as unexplored. Each round bounds an
 // element that was 0, so this ends; all elements bounded means nothing collapses. `options.trace`
 // is not used. Throws CollapseError if the quantized T-mesh does not collapse into a conforming
