@@ -98,19 +98,26 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   // Calibrated again after every repair: the bounds a repair adds raise the quad count.
   const bool calibrate = options.target_quads > 0 && !quantize.coarse;
   const std::vector<double> base = tm.arc_target;
-  // What the last smoothed round left, restored if a pinned-quad repair makes the T-mesh
-  // infeasible (bounds of 2 can conflict with arcs fixed to 0).
+  // The last smoothed result and its inverted and degenerate quads, kept while a pinned-quad
+  // repair tries another quantization: restored when that one is infeasible (bounds of 2 can
+  // conflict with arcs fixed to 0) or smooths no better — a quad that is inverted at a pinned
+  // corner in the input itself (bull's) stays inverted in either half.
   std::optional<RequantizeResult> smoothed;
-  int smoothed_rounds = 0;
+  int smoothed_bad = 0, smoothed_rounds = 0;
+  const auto restore_smoothed = [&] {
+    const double quantize_s = r.time_quantize_s, collapse_s = r.time_collapse_s,
+                 smoothing_s = r.time_smoothing_s;
+    r = std::move(*smoothed);
+    r.time_quantize_s = quantize_s;
+    r.time_collapse_s = collapse_s;
+    r.time_smoothing_s = smoothing_s;
+  };
   for (;;) {
     r.quantization = calibrate ? calibrate_density(tm, base, r.incidence, quantize, options, r)
                                : quantize_tmesh(tm, r.incidence, quantize);
     r.time_quantize_s += t.lap();
     if (r.quantization.arc_length.empty()) {
-      if (!smoothed) return r;
-      const double time_quantize_s = r.time_quantize_s;
-      r = std::move(*smoothed);
-      r.time_quantize_s = time_quantize_s;
+      if (smoothed) restore_smoothed();
       return r;
     }
     // A border loop shorter than 3 is found on the lengths alone (and its collapse would be
@@ -134,16 +141,23 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     }
     r.repair_constraints = quantize.extra_constraints;
     if (!on_mesh) break;
-    const std::vector<int> stuck =
+    const SmoothedQuads left =
         smooth_requantized(*mesh, tm, r.incidence, r.traced.feature_edges, r.traced.feature_corners,
                            r.collapsed, options.smoothing);
     r.time_smoothing_s += t.lap();
+    const int bad = left.inverted + left.degenerate;
+    if (smoothed && bad >= smoothed_bad) {
+      restore_smoothed();
+      break;
+    }
     // Quads no smoothing can right: bound the quantization and smooth the new one, a few
     // times at most (each round smooths the whole mesh again).
-    if (stuck.empty() || smoothed_rounds >= options.max_pinned_repairs) break;
+    if (left.stuck.empty() || smoothed_rounds >= options.max_pinned_repairs) break;
     MinOneConstraints bounds = quantize.extra_constraints;
-    if (!add_pinned_quad_bounds(tm, r.quantization.arc_length, r.collapsed, stuck, bounds)) break;
+    if (!add_pinned_quad_bounds(tm, r.quantization.arc_length, r.collapsed, left.stuck, bounds))
+      break;
     smoothed = r;
+    smoothed_bad = bad;
     quantize.extra_constraints = std::move(bounds);
     ++smoothed_rounds;
     ++r.repair_rounds;

@@ -188,11 +188,11 @@ quant::Layout requantization_layout(const QuadMesh& input, const TMesh& tmesh,
   return layout;
 }
 
-std::vector<int> smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
-                                    const TMeshIncidence& incidence,
-                                    const std::vector<std::array<int, 2>>& feature_edges,
-                                    const std::vector<int>& feature_corners, CollapsedMesh& result,
-                                    const quant::SmoothingOptions& options) {
+SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
+                                 const TMeshIncidence& incidence,
+                                 const std::vector<std::array<int, 2>>& feature_edges,
+                                 const std::vector<int>& feature_corners, CollapsedMesh& result,
+                                 const quant::SmoothingOptions& options) {
   if ((options.iterations <= 0 && options.quality_rounds <= 0) || !has_geometry(tmesh)) return {};
   const quant::Layout layout =
       requantization_layout(input, tmesh, incidence, feature_edges, feature_corners);
@@ -255,24 +255,39 @@ std::vector<int> smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
     vertex_charts[v] = o.patches;
   }
   const std::vector<int> moving = movable_vertices(t.mesh);
-  std::vector<int> stuck;
+  SmoothedQuads outcome;
   {
     quant::SurfaceSmoother smoother(layout, t, &vertex_charts);
     const std::vector<Vec3> placed = t.mesh.vertices;
     smoother.run(options, moving);
     smoother.reembed_tangled(options, moving, &placed);
     smoother.polish(options, moving);
+    std::set<std::array<int, 4>> input_quads;
+    for (std::array<int, 4> q : input.quads) {
+      std::sort(q.begin(), q.end());
+      input_quads.insert(q);
+    }
     std::vector<char> moves(nv, 0);
     for (int v : moving) moves[v] = smoother.can_move(v);
     for (int f = 0; f < t.mesh.num_quads(); ++f) {
       const auto& q = t.mesh.quads[f];
+      if (bimdf::detail::degenerate(t.mesh, q)) {
+        ++outcome.degenerate;
+        continue;
+      }
+      if (bimdf::detail::scaled_jacobian(t.mesh, q) >= 0) continue;
+      ++outcome.inverted;
       if (std::any_of(q.begin(), q.end(), [&](int v) { return moves[v]; })) continue;
-      if (!bimdf::detail::degenerate(t.mesh, q) && bimdf::detail::scaled_jacobian(t.mesh, q) < 0)
-        stuck.push_back(f);
+      // A quad of the input itself, pinned there at the same corners, is the input's fault:
+      // its halves would keep the bad corner.
+      std::array<int, 4> corners;
+      for (int a = 0; a < 4; ++a) corners[a] = t.origin[q[a]].mesh_vertex;
+      std::sort(corners.begin(), corners.end());
+      if (!input_quads.count(corners)) outcome.stuck.push_back(f);
     }
   }
   result.mesh = std::move(t.mesh);
-  return stuck;
+  return outcome;
 }
 
 }  // namespace bimdf::tmesh

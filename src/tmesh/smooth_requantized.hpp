@@ -26,6 +26,16 @@ quant::Layout requantization_layout(const QuadMesh& input, const TMesh& tmesh,
                                     const std::vector<std::array<int, 2>>& feature_edges,
                                     const std::vector<int>& feature_corners);
 
+// What smoothing left: quads inverted and degenerate (as metrics.hpp counts them), and among
+// the inverted ones those whose four corners all stay where they were put — pinned T-mesh
+// vertices: no smoothing can right them, only another quantization (add_pinned_quad_bounds,
+// separation_repair.hpp) — unless they are quads of the input pinned at the same corners.
+struct SmoothedQuads {
+  std::vector<int> stuck;
+  int inverted = 0;
+  int degenerate = 0;
+};
+
 // Smooths `result.mesh` in place on `input` (quant::SmoothingOptions: iterations, damping).
 // Each output vertex moves on the charts of every T-mesh patch it touches
 // (CollapsedVertex::patches), so a vertex merged across a collapsed strip can settle anywhere
@@ -38,13 +48,11 @@ quant::Layout requantization_layout(const QuadMesh& input, const TMesh& tmesh,
 // the vertices of a quad alone at a straight border corner (~180°, forced by the input) stay.
 // Does nothing with 0 iterations or without patch grids, arc chains and mesh vertices.
 //
-// Returns the quads left inverted (against their own normal, not degenerate) whose four
-// corners all stay where they were put — pinned T-mesh vertices: no smoothing can right them,
-// only another quantization (add_pinned_quad_bounds, separation_repair.hpp).
-std::vector<int> smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
-                                    const TMeshIncidence& incidence,
-                                    const std::vector<std::array<int, 2>>& feature_edges,
-                                    const std::vector<int>& feature_corners, CollapsedMesh& result,
-                                    const quant::SmoothingOptions& options);
+// Returns what smoothing left (SmoothedQuads).
+SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
+                                 const TMeshIncidence& incidence,
+                                 const std::vector<std::array<int, 2>>& feature_edges,
+                                 const std::vector<int>& feature_corners, CollapsedMesh& result,
+                                 const quant::SmoothingOptions& options);
 
 }  // namespace bimdf::tmesh

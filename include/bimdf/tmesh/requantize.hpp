@@ -35,7 +35,7 @@ struct RequantizeOptions {
   double max_density_reach = 4;
   // Pinned-quad repair: how many times at most a quantization is bounded again, and the mesh
   // smoothed again, because smoothing left quads inverted whose corners are all pinned
-  // (requantize_tmesh). 0 turns it off.
+  // (requantize_tmesh; each try costs a smoothing of the whole mesh). 0 turns it off.
   int max_pinned_repairs = 2;
 };
 
@@ -90,13 +90,13 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 // together where a patch cornered there collapsed), every zero element at it gets one; a
 // border loop shorter than 3 edges (a hole with fewer than three seeds closing into two edges)
 // gets bounds that make it ≥ 3; and when smoothing leaves a quad inverted whose four corners
-// are all pinned (at most max_pinned_repairs times; the result before such a round is kept if
-// the bounds make the T-mesh infeasible), an arc along it of length 1 gets a bound of 2
-// (src/tmesh/separation_repair.hpp). Then the T-mesh is quantized
-// again — the lazy constraints the paper (§4.2.3) mentions as unexplored. Each round bounds an
-// element that was 0, so this ends; all elements bounded means nothing collapses. `options.trace`
-// is not used. Throws CollapseError if the quantized T-mesh does not collapse into a conforming
-// mesh (see collapse.hpp).
+// are all pinned (and that is not an input quad), an arc along it of length 1 gets a bound of
+// 2, and the new quantization is smoothed too — kept only if it leaves fewer quads inverted or
+// degenerate, at most max_pinned_repairs times (src/tmesh/separation_repair.hpp). Then the
+// T-mesh is quantized again — the lazy constraints the paper (§4.2.3) mentions as unexplored. Each
+// round bounds an element that was 0, so this ends; all elements bounded means nothing collapses.
+// `options.trace` is not used. Throws CollapseError if the quantized T-mesh does not collapse into
+// a conforming mesh (see collapse.hpp).
 RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                   const RequantizeOptions& options, const std::string& source);
 
