@@ -423,6 +423,7 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
                                      c.arc_first.begin()) -
                     1;
       o.arcs.push_back(a), add_patches_of_arc(o, a);
+      o.arc_points.push_back({a, c.point_position[q]});
     } else {
       o.patches.push_back(
           static_cast<int>(std::upper_bound(c.patch_first.begin(), c.patch_first.end(), q) -

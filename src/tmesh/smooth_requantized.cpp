@@ -243,7 +243,16 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
         std::find_if(o.arcs.begin(), o.arcs.end(), [&](int a) { return curve[a]; });
     if (on_curve != o.arcs.end()) {
       origin.subside = *on_curve;
-      t.mesh.vertices[v] = closest_on_chain(input, tmesh.arc_chain[*on_curve], t.mesh.vertices[v]);
+      // The closest point to the mean of everything merged into it — unless that is an end of
+      // the curve arc, where the vertex at that end sits (a curve edge much shorter than its
+      // neighbours): then its own point on the arc, or the quad between them is degenerate
+      // and no move along so short a curve opens it.
+      const std::vector<int>& chain = tmesh.arc_chain[*on_curve];
+      Vec3 at = closest_on_chain(input, chain, t.mesh.vertices[v]);
+      if (at == input.vertices[chain.front()] || at == input.vertices[chain.back()])
+        for (const auto& [a, p] : o.arc_points)
+          if (a == *on_curve) at = closest_on_chain(input, chain, p);
+      t.mesh.vertices[v] = at;
       continue;
     }
     if (!o.tmesh_vertices.empty())

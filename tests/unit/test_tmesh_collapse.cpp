@@ -140,6 +140,18 @@ TEST(TMeshCollapse, ZeroWidthStripCollapses) {
     EXPECT_TRUE(std::count(o.patches.begin(), o.patches.end(), 1) +
                     std::count(o.patches.begin(), o.patches.end(), 2) >
                 0);
+    // Points inside the strip's arcs keep their own positions, one on each line: where one
+    // line is a curve, smoothing starts the vertex at its point there, not at the mean.
+    if (o.tmesh_vertices.empty()) {
+      ASSERT_EQ(o.arc_points.size(), 2u) << v;
+      std::set<double> heights;
+      for (const auto& [a, p] : o.arc_points) {
+        heights.insert(p[1]);
+        EXPECT_EQ(p[0], out.mesh.vertices[v][0]);
+        EXPECT_TRUE(std::count(o.arcs.begin(), o.arcs.end(), a)) << v;
+      }
+      EXPECT_EQ(heights, (std::set<double>{2, 3})) << v;
+    }
   }
   EXPECT_EQ(merged, 5);
 }

@@ -39,6 +39,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bimdf/mesh.hpp"
@@ -58,6 +59,10 @@ struct CollapsedVertex {
   std::vector<int> patches;         // T-mesh patches touching any of its points
   std::vector<int> arcs;            // arcs it lies on (inside or at an end)
   std::vector<int> tmesh_vertices;  // T-mesh vertices merged into it
+  // The points inside arcs merged into it: each one's arc and own position. The vertex sits at
+  // the mean of all its points; smooth_requantized may start a vertex that must stay on a curve
+  // arc at its point there instead.
+  std::vector<std::pair<int, std::array<double, 3>>> arc_points;
 };
 
 struct CollapsedMesh {
