@@ -13,6 +13,7 @@
 #include "bimdf/tmesh/requantize.hpp"
 #include "cli_fixture.hpp"
 #include "mesh/quad_quality.hpp"
+#include "tmesh/separation_repair.hpp"
 #include "tmesh_fixtures.hpp"
 
 namespace bimdf::testing {
@@ -146,6 +147,20 @@ TEST_F(Requantize, PinnedInvertedQuadSplitsInTwo) {
   ASSERT_EQ(plain.collapsed.mesh.num_quads(), 1);
   EXPECT_LT(detail::scaled_jacobian(plain.collapsed.mesh, plain.collapsed.mesh.quads[0]), -0.5);
   EXPECT_EQ(plain.repair_rounds, 0);
+  // The bound goes to an arc of length 1 along the quad with the longest target — a long side
+  // (2 edges × ½) before a short one (1 edge × ½) — and each call bounds a new arc, until
+  // all four are bounded.
+  const tmesh::TMesh& t = plain.traced.tmesh;
+  ASSERT_EQ(t.num_arcs(), 4);
+  tmesh::MinOneConstraints bounds;
+  for (double target : {1.0, 1.0, 0.5, 0.5}) {
+    ASSERT_TRUE(tmesh::add_pinned_quad_bounds(t, plain.quantization.arc_length, plain.collapsed,
+                                              {0}, bounds));
+    EXPECT_EQ(t.arc_target[bounds.arcs_two.back()], target);
+  }
+  EXPECT_FALSE(tmesh::add_pinned_quad_bounds(t, plain.quantization.arc_length, plain.collapsed, {0},
+                                             bounds));
+  EXPECT_EQ(bounds.size(), 4);
 
   const json j = requantize(bent, "--scale 2");
   ASSERT_EQ(j["status"], "optimal");
