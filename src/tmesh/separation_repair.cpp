@@ -25,23 +25,16 @@ std::vector<char> on_curves(const TMesh& tm, const TMeshIncidence& incidence) {
   return on;
 }
 
-// Adds arc `a` or side pair `side` to `bounds` unless already there; returns whether added.
-bool bound_arc(int a, MinOneConstraints& bounds) {
-  if (std::find(bounds.arcs.begin(), bounds.arcs.end(), a) != bounds.arcs.end()) return false;
-  bounds.arcs.push_back(a);
+// Adds `x` to `list` (one kind of bound) unless already there; returns whether added.
+template <typename T>
+bool add_once(std::vector<T>& list, const T& x) {
+  if (std::find(list.begin(), list.end(), x) != list.end()) return false;
+  list.push_back(x);
   return true;
 }
-bool bound_arc_two(int a, MinOneConstraints& bounds) {
-  if (std::find(bounds.arcs_two.begin(), bounds.arcs_two.end(), a) != bounds.arcs_two.end())
-    return false;
-  bounds.arcs_two.push_back(a);
-  return true;
-}
-bool bound_side(SideRef side, MinOneConstraints& bounds) {
-  if (std::find(bounds.sides.begin(), bounds.sides.end(), side) != bounds.sides.end()) return false;
-  bounds.sides.push_back(side);
-  return true;
-}
+bool bound_arc(int a, MinOneConstraints& bounds) { return add_once(bounds.arcs, a); }
+bool bound_arc_two(int a, MinOneConstraints& bounds) { return add_once(bounds.arcs_two, a); }
+bool bound_side(SideRef side, MinOneConstraints& bounds) { return add_once(bounds.sides, side); }
 
 }  // namespace
 

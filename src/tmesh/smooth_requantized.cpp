@@ -271,11 +271,7 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
     smoother.run(options, moving);
     smoother.reembed_tangled(options, moving, &placed);
     smoother.polish(options, moving);
-    std::set<std::array<int, 4>> input_quads;
-    for (std::array<int, 4> q : input.quads) {
-      std::sort(q.begin(), q.end());
-      input_quads.insert(q);
-    }
+    std::set<std::array<int, 4>> input_quads;  // sorted corners; built for the first candidate
     std::vector<char> moves(nv, 0);
     for (int v : moving) moves[v] = smoother.can_move(v);
     for (int f = 0; f < t.mesh.num_quads(); ++f) {
@@ -292,6 +288,11 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
       std::array<int, 4> corners;
       for (int a = 0; a < 4; ++a) corners[a] = t.origin[q[a]].mesh_vertex;
       std::sort(corners.begin(), corners.end());
+      if (input_quads.empty())
+        for (std::array<int, 4> c : input.quads) {
+          std::sort(c.begin(), c.end());
+          input_quads.insert(c);
+        }
       if (!input_quads.count(corners)) outcome.stuck.push_back(f);
     }
   }
