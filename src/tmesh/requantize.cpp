@@ -98,10 +98,10 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   // Calibrated again after every repair: the bounds a repair adds raise the quad count.
   const bool calibrate = options.target_quads > 0 && !quantize.coarse;
   const std::vector<double> base = tm.arc_target;
-  // The last smoothed result and its inverted and degenerate quads, kept while a pinned-quad
+  // The last smoothed result and its inverted and degenerate quads, kept while a quad-splitting
   // repair tries another quantization: restored when that one is infeasible (bounds of 2 can
-  // conflict with arcs fixed to 0) or smooths no better — a quad that is inverted at a pinned
-  // corner in the input itself (bull's) stays inverted in either half.
+  // conflict with arcs fixed to 0) or smooths no better (the split quad's halves can stay
+  // inverted, or turn others over).
   std::optional<RequantizeResult> smoothed;
   int smoothed_bad = 0, smoothed_rounds = 0;
   const auto restore_smoothed = [&] {
@@ -150,11 +150,11 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       restore_smoothed();
       break;
     }
-    // Quads no smoothing can right: bound the quantization and smooth the new one, a few
-    // times at most (each round smooths the whole mesh again).
-    if (left.stuck.empty() || smoothed_rounds >= options.max_pinned_repairs) break;
+    // Quads smoothing did not right: split them by bounding the quantization and smooth the
+    // new one, a few times at most (each round smooths the whole mesh again).
+    if (left.to_split.empty() || smoothed_rounds >= options.max_split_repairs) break;
     MinOneConstraints bounds = quantize.extra_constraints;
-    if (!add_pinned_quad_bounds(tm, r.quantization.arc_length, r.collapsed, left.stuck, bounds))
+    if (!add_quad_split_bounds(tm, r.quantization.arc_length, r.collapsed, left.to_split, bounds))
       break;
     smoothed = r;
     smoothed_bad = bad;

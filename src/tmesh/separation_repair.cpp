@@ -166,11 +166,11 @@ bool add_border_loop_bounds(const TMesh& tm, const TMeshIncidence& incidence,
   return added;
 }
 
-bool add_pinned_quad_bounds(const TMesh& tm, const std::vector<int64_t>& length,
-                            const CollapsedMesh& collapsed, const std::vector<int>& stuck,
-                            MinOneConstraints& bounds) {
+bool add_quad_split_bounds(const TMesh& tm, const std::vector<int64_t>& length,
+                           const CollapsedMesh& collapsed, const std::vector<int>& to_split,
+                           MinOneConstraints& bounds) {
   bool added = false;
-  for (int f : stuck) {
+  for (int f : to_split) {
     const auto& q = collapsed.mesh.quads[f];
     // The arcs of length 1 that make one of the quad's edges: both ends lie on them.
     int best = -1;

@@ -46,15 +46,17 @@ bool add_valence_bounds(const TMesh& tmesh, const std::vector<int64_t>& length,
 bool add_border_loop_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
                             const std::vector<int64_t>& length, MinOneConstraints& bounds);
 
-// Quads that smoothing left inverted with all four corners pinned (`stuck`, quad ids of
-// collapsed.mesh, from smooth_requantized): their corners are T-mesh vertices that stay at
-// their input vertices (feature corners, ends of curves), so only the quantization can right
-// them. On dino at scale 2 such a quad joins two input quads across a bend. Each gets a bound
-// of 2 on the arc of length 1 with the longest target among those its edges run along
-// (MinOneConstraints::arcs_two): the quad splits in two, and the vertex between them can
-// move. Returns whether any was added (not when every such arc is bounded already).
-bool add_pinned_quad_bounds(const TMesh& tmesh, const std::vector<int64_t>& length,
-                            const CollapsedMesh& collapsed, const std::vector<int>& stuck,
-                            MinOneConstraints& bounds);
+// Quads that smoothing left inverted (`to_split`, quad ids of collapsed.mesh, from
+// smooth_requantized): where a quad's corners are pinned (feature corners, ends of curves) or
+// smoothing cannot move them without turning a neighbour over, only the quantization can right
+// it. On dino at scale 2 such a quad joins two input quads across a bend; on pig a quad of a
+// 50:1 sliver strip between feature curves, inverted by the sliding of two of its corners.
+// Each gets a bound of 2 on the arc of length 1 with the longest target among those its edges
+// run along (MinOneConstraints::arcs_two): the quad splits in two, and the vertex between them
+// can move. A quad inside a patch, no edge along an arc of length 1, gets none. Returns whether
+// any was added (not when every such arc is bounded already).
+bool add_quad_split_bounds(const TMesh& tmesh, const std::vector<int64_t>& length,
+                           const CollapsedMesh& collapsed, const std::vector<int>& to_split,
+                           MinOneConstraints& bounds);
 
 }  // namespace bimdf::tmesh

@@ -271,9 +271,9 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
     smoother.run(options, moving);
     smoother.reembed_tangled(options, moving, &placed);
     smoother.polish(options, moving);
-    std::set<std::array<int, 4>> input_quads;  // sorted corners; built for the first candidate
-    std::vector<char> moves(nv, 0);
-    for (int v : moving) moves[v] = smoother.can_move(v);
+    // Sorted corners of the input's own inverted quads; built for the first candidate.
+    std::set<std::array<int, 4>> inverted_input;
+    bool inverted_input_built = false;
     for (int f = 0; f < t.mesh.num_quads(); ++f) {
       const auto& q = t.mesh.quads[f];
       if (bimdf::detail::degenerate(t.mesh, q)) {
@@ -282,18 +282,20 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
       }
       if (bimdf::detail::scaled_jacobian(t.mesh, q) >= 0) continue;
       ++outcome.inverted;
-      if (std::any_of(q.begin(), q.end(), [&](int v) { return moves[v]; })) continue;
-      // A quad of the input itself, pinned there at the same corners, is the input's fault:
-      // its halves would keep the bad corner.
+      // A quad inverted in the input, repeated at the same corners, is the input's fault: its
+      // halves would keep the bad corner (bull's).
       std::array<int, 4> corners;
       for (int a = 0; a < 4; ++a) corners[a] = t.origin[q[a]].mesh_vertex;
       std::sort(corners.begin(), corners.end());
-      if (input_quads.empty())
+      if (!inverted_input_built) {
         for (std::array<int, 4> c : input.quads) {
+          if (bimdf::detail::scaled_jacobian(input, c) >= 0) continue;
           std::sort(c.begin(), c.end());
-          input_quads.insert(c);
+          inverted_input.insert(c);
         }
-      if (!input_quads.count(corners)) outcome.stuck.push_back(f);
+        inverted_input_built = true;
+      }
+      if (!inverted_input.count(corners)) outcome.to_split.push_back(f);
     }
   }
   result.mesh = std::move(t.mesh);

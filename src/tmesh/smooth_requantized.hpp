@@ -26,12 +26,14 @@ quant::Layout requantization_layout(const QuadMesh& input, const TMesh& tmesh,
                                     const std::vector<std::array<int, 2>>& feature_edges,
                                     const std::vector<int>& feature_corners);
 
-// What smoothing left: quads inverted and degenerate (as metrics.hpp counts them), and among
-// the inverted ones those whose four corners all stay where they were put — pinned T-mesh
-// vertices: no smoothing can right them, only another quantization (add_pinned_quad_bounds,
-// separation_repair.hpp) — unless they are quads of the input pinned at the same corners.
+// What smoothing left: quads inverted and degenerate (as metrics.hpp counts them), and the
+// inverted ones that another quantization may right (`to_split`): all but those repeating, at
+// the same corners, a quad that is inverted in the input. Smoothing stops where every move of
+// one vertex turns some quad over; a quad with pinned corners (T-mesh vertices that stay at
+// their input vertices) cannot move at all. Splitting such a quad (add_quad_split_bounds,
+// separation_repair.hpp) puts a vertex between its corners that smoothing can move.
 struct SmoothedQuads {
-  std::vector<int> stuck;
+  std::vector<int> to_split;
   int inverted = 0;
   int degenerate = 0;
 };

@@ -14,6 +14,7 @@
 #include "cli_fixture.hpp"
 #include "mesh/quad_quality.hpp"
 #include "tmesh/separation_repair.hpp"
+#include "tmesh/smooth_requantized.hpp"
 #include "tmesh_fixtures.hpp"
 
 namespace bimdf::testing {
@@ -132,7 +133,7 @@ TEST_F(Requantize, SubdividedCubeCoarsensToSixPatches) {
 // corners and so pinned. At --scale 2 the strip's long sides (2 edges) quantize to 1 and its
 // short ones (1 edge, target ½) to 1 for separation: one quad, the union of the two, whose
 // corners in that order are inverted (scaled Jacobian −0.51) and which no smoothing can move.
-// The pinned-quad repair bounds a long side by 2: the two quads come back, none inverted.
+// The quad-splitting repair bounds a long side by 2: the two quads come back, none inverted.
 TEST_F(Requantize, PinnedInvertedQuadSplitsInTwo) {
   QuadMesh bent;
   bent.vertices = {{0, 0, 0},    {1.3, 1.6, 0},  {0.2, 2.9, 0},
@@ -142,7 +143,7 @@ TEST_F(Requantize, PinnedInvertedQuadSplitsInTwo) {
   // Without the repair: the one quad, inverted.
   tmesh::RequantizeOptions options;
   options.trace.density = 0.5;
-  options.max_pinned_repairs = 0;
+  options.max_split_repairs = 0;
   const tmesh::RequantizeResult plain = tmesh::requantize(bent, options, "bent");
   ASSERT_EQ(plain.collapsed.mesh.num_quads(), 1);
   EXPECT_LT(detail::scaled_jacobian(plain.collapsed.mesh, plain.collapsed.mesh.quads[0]), -0.5);
@@ -154,12 +155,12 @@ TEST_F(Requantize, PinnedInvertedQuadSplitsInTwo) {
   ASSERT_EQ(t.num_arcs(), 4);
   tmesh::MinOneConstraints bounds;
   for (double target : {1.0, 1.0, 0.5, 0.5}) {
-    ASSERT_TRUE(tmesh::add_pinned_quad_bounds(t, plain.quantization.arc_length, plain.collapsed,
-                                              {0}, bounds));
+    ASSERT_TRUE(tmesh::add_quad_split_bounds(t, plain.quantization.arc_length, plain.collapsed, {0},
+                                             bounds));
     EXPECT_EQ(t.arc_target[bounds.arcs_two.back()], target);
   }
-  EXPECT_FALSE(tmesh::add_pinned_quad_bounds(t, plain.quantization.arc_length, plain.collapsed, {0},
-                                             bounds));
+  EXPECT_FALSE(
+      tmesh::add_quad_split_bounds(t, plain.quantization.arc_length, plain.collapsed, {0}, bounds));
   EXPECT_EQ(bounds.size(), 4);
 
   const json j = requantize(bent, "--scale 2");
@@ -172,6 +173,39 @@ TEST_F(Requantize, PinnedInvertedQuadSplitsInTwo) {
   EXPECT_EQ(m.inverted, 0);
   EXPECT_EQ(m.degenerate, 0);
   EXPECT_GT(m.scaled_jacobian_min, 0.3);
+}
+
+// Which inverted quads smoothing hands to the quad-splitting repair: the bent strip's one
+// (every corner pinned), but not a quad that repeats, at the same corners, a quad inverted in
+// the input itself (a concave quad: its halves would keep the reflex corner).
+TEST_F(Requantize, SplitsInvertedQuadsButNotTheInputs) {
+  const auto smoothed_again = [](const QuadMesh& input, double density) {
+    tmesh::RequantizeOptions options;
+    options.trace.density = density;
+    options.max_split_repairs = 0;
+    tmesh::RequantizeResult r = tmesh::requantize(input, options, "input");
+    EXPECT_EQ(r.collapsed.mesh.num_quads(), 1);
+    return tmesh::smooth_requantized(input, r.traced.tmesh, r.incidence, r.traced.feature_edges,
+                                     r.traced.feature_corners, r.collapsed, options.smoothing);
+  };
+  QuadMesh bent;
+  bent.vertices = {{0, 0, 0},    {1.3, 1.6, 0},  {0.2, 2.9, 0},
+                   {-0.6, 2, 0}, {0.1, 1.25, 0}, {0, 1, 0}};
+  bent.quads = {{0, 1, 4, 5}, {1, 2, 3, 4}};
+  const tmesh::SmoothedQuads split = smoothed_again(bent, 0.5);
+  EXPECT_EQ(split.inverted, 1);
+  EXPECT_EQ(split.to_split, std::vector<int>{0});
+
+  QuadMesh concave;
+  concave.vertices = {{0, 0, 0}, {2, 0, 0}, {0.4, 0.4, 0}, {0, 2, 0}};
+  concave.quads = {{0, 1, 2, 3}};
+  ASSERT_LT(detail::scaled_jacobian(concave, concave.quads[0]), -0.5);
+  const tmesh::SmoothedQuads kept = smoothed_again(concave, 1.0);
+  EXPECT_EQ(kept.inverted, 1);
+  EXPECT_TRUE(kept.to_split.empty());
+  const json j = requantize(concave, "--scale 1");
+  EXPECT_EQ(j["quads"], 1);
+  EXPECT_EQ(j["repair_rounds"], 0);
 }
 
 TEST_F(Requantize, ThinStripCollapses) {

@@ -33,10 +33,10 @@ struct RequantizeOptions {
   int calibration_solves = 8;
   double max_density_change = 2;
   double max_density_reach = 4;
-  // Pinned-quad repair: how many times at most a quantization is bounded again, and the mesh
-  // smoothed again, because smoothing left quads inverted whose corners are all pinned
-  // (requantize_tmesh; each try costs a smoothing of the whole mesh). 0 turns it off.
-  int max_pinned_repairs = 2;
+  // Quad-splitting repair: how many times at most a quantization is bounded again, and the
+  // mesh smoothed again, because smoothing left quads inverted (requantize_tmesh; each try
+  // costs a smoothing of the whole mesh). 0 turns it off.
+  int max_split_repairs = 2;
 };
 
 struct RequantizeResult {
@@ -89,10 +89,11 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 // min-one bound; when a seed keeps its place but not its valence (traces leaving it folded
 // together where a patch cornered there collapsed), every zero element at it gets one; a
 // border loop shorter than 3 edges (a hole with fewer than three seeds closing into two edges)
-// gets bounds that make it ≥ 3; and when smoothing leaves a quad inverted whose four corners
-// are all pinned (and that is not an input quad), an arc along it of length 1 gets a bound of
-// 2, and the new quantization is smoothed too — kept only if it leaves fewer quads inverted or
-// degenerate, at most max_pinned_repairs times (src/tmesh/separation_repair.hpp). Then the
+// gets bounds that make it ≥ 3; and when smoothing leaves a quad inverted (but for one that
+// repeats an inverted quad of the input), an arc of length 1 along it gets a bound of 2, so
+// that the quad splits, and the new quantization is smoothed too — kept only if it leaves
+// fewer quads inverted or degenerate, at most max_split_repairs times
+// (src/tmesh/separation_repair.hpp). Then the
 // T-mesh is quantized again — the lazy constraints the paper (§4.2.3) mentions as unexplored. Each
 // round bounds an element that was 0, so this ends; all elements bounded means nothing collapses.
 // `options.trace` is not used. Throws CollapseError if the quantized T-mesh does not collapse into
