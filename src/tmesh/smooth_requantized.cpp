@@ -40,10 +40,13 @@ Vec3 closest_on_chain(const QuadMesh& mesh, const std::vector<int>& chain, const
     for (int d = 0; d < 3; ++d)
       ab2 += (b[d] - a[d]) * (b[d] - a[d]), t += (p[d] - a[d]) * (b[d] - a[d]);
     t = ab2 > 0 ? std::clamp(t / ab2, 0.0, 1.0) : 0.0;
-    Vec3 q;
+    // Exactly b when clamped there (a + 1·(b − a) can differ in the last bit): callers test
+    // whether the point landed on an end of the chain.
+    Vec3 q = b;
+    if (t < 1)
+      for (int d = 0; d < 3; ++d) q[d] = a[d] + t * (b[d] - a[d]);
     double d2 = 0;
-    for (int d = 0; d < 3; ++d)
-      q[d] = a[d] + t * (b[d] - a[d]), d2 += (q[d] - p[d]) * (q[d] - p[d]);
+    for (int d = 0; d < 3; ++d) d2 += (q[d] - p[d]) * (q[d] - p[d]);
     if (best_d2 < 0 || d2 < best_d2) best = q, best_d2 = d2;
   }
   return best;
