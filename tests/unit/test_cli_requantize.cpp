@@ -208,6 +208,38 @@ TEST_F(Requantize, SplitsInvertedQuadsButNotTheInputs) {
   EXPECT_EQ(j["repair_rounds"], 0);
 }
 
+// A split that smooths no better is undone. The bent strip's second quad is concave at its
+// pinned border corner (inverted in the input). At --scale 2 the two merge into one inverted
+// quad, which is not an input quad, so the repair splits it — into the two input quads, the
+// concave one still inverted: as many inverted as before, and the one quad is restored.
+TEST_F(Requantize, SplitThatSmoothsNoBetterIsUndone) {
+  QuadMesh bent;
+  bent.vertices = {{0, 0, 0},     {1.3, 1.6, 0},  {0.2, 2.9, 0},
+                   {0.5, 1.9, 0}, {0.1, 1.25, 0}, {0, 1, 0}};
+  bent.quads = {{0, 1, 4, 5}, {1, 2, 3, 4}};
+  ASSERT_GT(detail::scaled_jacobian(bent, bent.quads[0]), 0.3);
+  ASSERT_LT(detail::scaled_jacobian(bent, bent.quads[1]), -0.3);
+  tmesh::RequantizeOptions options;
+  options.trace.density = 0.5;
+  options.max_split_repairs = 0;
+  tmesh::RequantizeResult plain = tmesh::requantize(bent, options, "bent");
+  ASSERT_EQ(plain.collapsed.mesh.num_quads(), 1);
+  const tmesh::SmoothedQuads left = tmesh::smooth_requantized(
+      bent, plain.traced.tmesh, plain.incidence, plain.traced.feature_edges,
+      plain.traced.feature_corners, plain.collapsed, options.smoothing);
+  ASSERT_EQ(left.to_split, std::vector<int>{0});
+  // With the repair: tried (a second quantization with a bound), then undone.
+  options.max_split_repairs = 2;
+  const tmesh::RequantizeResult repaired = tmesh::requantize(bent, options, "bent");
+  EXPECT_EQ(repaired.collapsed.mesh.num_quads(), 1);
+  EXPECT_EQ(repaired.quantization.arc_length, plain.quantization.arc_length);
+  EXPECT_EQ(repaired.collapsed.mesh.vertices, plain.collapsed.mesh.vertices);
+  EXPECT_TRUE(repaired.repair_constraints.arcs_two.empty());
+  const json j = requantize(bent, "--scale 2");
+  EXPECT_EQ(j["quads"], 1);
+  EXPECT_EQ(j["metrics"]["inverted"], 1);
+}
+
 TEST_F(Requantize, ThinStripCollapses) {
   const QuadMesh mesh = test::thin_strip_mesh();
   const json j = requantize(mesh, "--scale 2");
