@@ -85,11 +85,13 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
   relaxed->excludes("--coarse");
   cmd->add_option("--coarse-lengths", o.coarse_lengths,
                   "With --coarse: `uniform` multiplies the coarse lengths by one integer for "
-                  "the requested density (keeps the coarse layout's base complex exactly), "
-                  "`fitted` solves again for lengths at that density with the zero arcs kept "
-                  "(better quads, but separatrices drift apart and the base complex grows)")
+                  "the requested density (keeps the coarse layout's base complex exactly) and "
+                  "falls back to `fitted` where that leaves inverted quads that fitted lengths "
+                  "do not; `fitted` solves again for lengths at that density with the zero "
+                  "arcs kept (better quads, but separatrices drift apart and the base complex "
+                  "grows); `strict-uniform`: uniform, never refitted")
       ->default_val("uniform")
-      ->check(CLI::IsMember({"fitted", "uniform"}));
+      ->check(CLI::IsMember({"fitted", "uniform", "strict-uniform"}));
   cmd->add_option("--max-angle", o.max_angle,
                   "Trace the angle-bounded extended motorcycle graph (Lyon et al. 2021): "
                   "separatrices may deviate from the input's grid lines by at most this many "
@@ -146,7 +148,8 @@ int run_requantize(const RequantizeCommandOptions& o) {
   ro.quantize.cost =
       o.cost == "abs" ? tmesh::DeviationCost::Absolute : tmesh::DeviationCost::Quadratic;
   ro.quantize.coarse = o.coarse;
-  ro.quantize.coarse_uniform = o.coarse_lengths == "uniform";
+  ro.quantize.coarse_uniform = o.coarse_lengths != "fitted";
+  ro.refit_uniform = o.coarse_lengths == "uniform";
   ro.quantize.relaxed = o.relaxed;
   ro.quantize.relaxed_weight = o.relaxed_weight;
   ro.quantize.threads = o.threads;
@@ -222,6 +225,11 @@ int run_requantize(const RequantizeCommandOptions& o) {
   j["zero_arcs"] = q.zero_arcs;
   if (o.coarse) j["coarse_objective"] = q.coarse_objective;
   if (o.coarse && q.coarse_factor > 0) j["coarse_factor"] = q.coarse_factor;
+  if (o.coarse) j["coarse_lengths"] = q.coarse_factor > 0 ? "uniform" : "fitted";
+  if (r.coarse_refitted)
+    std::cerr << "note: uniform coarse lengths left quads inverted that no split reached; "
+                 "the lengths were fitted instead (the base complex grows; "
+                 "--coarse-lengths strict-uniform keeps uniform lengths)\n";
   s << "objective     " << q.objective << (o.coarse ? " (coarse stage " : "")
     << (o.coarse ? std::to_string(q.coarse_objective) + ")" : "") << "; " << q.zero_arcs << " of "
     << tm.num_arcs() << " arcs quantized to 0\n";

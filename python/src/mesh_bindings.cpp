@@ -222,8 +222,9 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   if (coarse && relaxed) throw py::value_error("coarse and relaxed exclude each other");
   if (cost != "quadratic" && cost != "abs")
     throw py::value_error("cost must be 'quadratic' or 'abs', got '" + cost + "'");
-  if (coarse_lengths != "uniform" && coarse_lengths != "fitted")
-    throw py::value_error("coarse_lengths must be 'uniform' or 'fitted'");
+  if (coarse_lengths != "uniform" && coarse_lengths != "fitted" &&
+      coarse_lengths != "strict-uniform")
+    throw py::value_error("coarse_lengths must be 'uniform', 'fitted' or 'strict-uniform'");
   if (max_angle && !(*max_angle >= 0 && *max_angle <= 90))
     throw py::value_error("max_angle must be in [0, 90]");
   if (!(sharp_angle >= 0 && sharp_angle <= 180))
@@ -238,7 +239,8 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   ro.quantize.cost =
       cost == "abs" ? tmesh::DeviationCost::Absolute : tmesh::DeviationCost::Quadratic;
   ro.quantize.coarse = coarse;
-  ro.quantize.coarse_uniform = coarse_lengths == "uniform";
+  ro.quantize.coarse_uniform = coarse_lengths != "fitted";
+  ro.refit_uniform = coarse_lengths == "uniform";
   ro.quantize.relaxed = relaxed;
   ro.quantize.relaxed_weight = relaxed_weight;
   ro.quantize.threads = threads;
@@ -279,6 +281,7 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   report["min_one_constraints"] = q.constraints.size();
   report["zero_arcs"] = q.zero_arcs;
   report["repair_rounds"] = r.repair_rounds;
+  if (coarse) report["coarse_lengths"] = q.coarse_factor > 0 ? "uniform" : "fitted";
   report["density"] = ro.trace.density;
   if (ro.target_quads > 0) {
     report["target_quads"] = ro.target_quads;

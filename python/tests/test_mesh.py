@@ -101,6 +101,7 @@ def test_requantize_equals_the_cli(bunny_remeshed, tmp_path):
         np.testing.assert_array_equal(V, V_cli)
         for key in ("status", "quads", "zero_arcs", "tmesh_patches", "nonzero_paths"):
             assert report[key] == cli_report[key], key
+        assert report.get("coarse_lengths") == cli_report.get("coarse_lengths")
         assert_same_numbers(report["metrics"], cli_report["metrics"])
 
 

@@ -151,17 +151,23 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       break;
     }
     // Quads smoothing did not right: split them by bounding the quantization and smooth the
-    // new one, a few times at most (each round smooths the whole mesh again).
+    // new one, a few times at most (each round smooths the whole mesh again); where no split
+    // reaches them, uniform coarse lengths get fitted ones instead.
     if (left.to_split.empty() || smoothed_rounds >= options.max_split_repairs) break;
     MinOneConstraints bounds = quantize.extra_constraints;
-    if (!add_quad_split_bounds(tm, r.quantization.arc_length, r.collapsed, left.to_split, bounds))
-      break;
+    const bool split =
+        add_quad_split_bounds(tm, r.quantization.arc_length, r.collapsed, left.to_split, bounds);
+    const bool refit = !split && options.refit_uniform && quantize.coarse_uniform;
+    if (!split && !refit) break;
     smoothed = r;
     smoothed_bad = bad;
-    quantize.extra_constraints = std::move(bounds);
+    if (split) quantize.extra_constraints = std::move(bounds);
+    if (refit) quantize.coarse_uniform = false;
     ++smoothed_rounds;
     ++r.repair_rounds;
   }
+  r.coarse_refitted = options.quantize.coarse && options.quantize.coarse_uniform &&
+                      r.quantization.coarse_factor == 0;
   return r;
 }
 

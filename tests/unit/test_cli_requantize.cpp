@@ -129,6 +129,28 @@ TEST_F(Requantize, SubdividedCubeCoarsensToSixPatches) {
   }
 }
 
+// The lengths an output has are reported: uniform ones (every coarse length times the coarse
+// factor) on the cube, where nothing is inverted, so the default does not refit; fitted ones
+// when asked for. An unknown choice is refused.
+TEST_F(Requantize, CoarseLengthsAreReported) {
+  const QuadMesh cube = test::subdivided_cube(3);
+  for (const std::string choice : {"uniform", "strict-uniform", "fitted"}) {
+    const json j = requantize(cube, "--coarse --coarse-lengths " + choice);
+    ASSERT_EQ(j["status"], "optimal") << choice;
+    const bool uniform = choice != "fitted";
+    EXPECT_EQ(j["coarse_lengths"], uniform ? "uniform" : "fitted") << choice;
+    EXPECT_EQ(j.contains("coarse_factor"), uniform) << choice;
+    EXPECT_EQ(j["layout_patches"], 6) << choice;
+    EXPECT_EQ(measure_quad_mesh(output()).inverted, 0) << choice;
+  }
+  const std::string in = write_mesh("cube.obj", cube);
+  const CliRun r =
+      run("requantize " + in + " -o " + path("even.obj") + " --coarse --coarse-lengths even");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--coarse-lengths"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("even.obj")));
+}
+
 // Two valid quads of a strip bent back on itself (the plane z = 0), its four corners border
 // corners and so pinned. At --scale 2 the strip's long sides (2 edges) quantize to 1 and its
 // short ones (1 edge, target ½) to 1 for separation: one quad, the union of the two, whose

@@ -37,6 +37,14 @@ struct RequantizeOptions {
   // mesh smoothed again, because smoothing left quads inverted (requantize_tmesh; each try
   // costs a smoothing of the whole mesh). 0 turns it off.
   int max_split_repairs = 2;
+  // With quantize.coarse_uniform: when smoothing leaves quads inverted and no split reaches
+  // them (a quad inside a patch that the coarse lengths, multiplied by one integer, fill with
+  // lines far denser than the input's grid there), quantize once more with fitted lengths
+  // (quantize.coarse_uniform off: the coarse layout's zero arcs kept, lengths at the target
+  // density) and keep that if it leaves fewer quads inverted or degenerate. The base complex
+  // then grows (separatrices no longer meet exactly); RequantizeResult::coarse_refitted says so.
+  // Counts as one of the max_split_repairs tries.
+  bool refit_uniform = true;
 };
 
 struct RequantizeResult {
@@ -56,6 +64,8 @@ struct RequantizeResult {
   double density_factor = 1;
   int calibration_solves = 0;
   double calibration_floor = -1;
+  // Whether refit_uniform replaced the uniform coarse lengths by fitted ones.
+  bool coarse_refitted = false;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
 
@@ -93,7 +103,7 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 // repeats an inverted quad of the input), an arc of length 1 along it gets a bound of 2, so
 // that the quad splits, and the new quantization is smoothed too — kept only if it leaves
 // fewer quads inverted or degenerate, at most max_split_repairs times
-// (src/tmesh/separation_repair.hpp). Then the
+// (src/tmesh/separation_repair.hpp; for uniform coarse lengths see refit_uniform). Then the
 // T-mesh is quantized again — the lazy constraints the paper (§4.2.3) mentions as unexplored. Each
 // round bounds an element that was 0, so this ends; all elements bounded means nothing collapses.
 // `options.trace` is not used. Throws CollapseError if the quantized T-mesh does not collapse into
