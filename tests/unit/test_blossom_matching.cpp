@@ -159,7 +159,7 @@ TEST(BlossomMatching, EqualsLemonOnLargerGraphs) {
 // "=" pairs start matched, every edge tight), and a closing edge from 2i back to 0 that becomes
 // tight at dual change i, so level i closes around level i − 1. The last free vertex L hangs
 // off 2k and meets the tower only after it is complete: the augmentation rotates through all k
-// levels, and the certificate must sum z along chains deeper than its short walk (16 levels).
+// levels, and the certificate must sum z along chains deeper than its short walk (32 levels).
 // Every perfect matching uses (2k, L); the rest can weigh 0, so the optimum is w(2k, L).
 TEST(BlossomMatching, DeeplyNestedBlossoms) {
   for (int k : {3, 20, 300}) {
