@@ -42,11 +42,11 @@ class SurfaceSmoother {
   void polish(const SmoothingOptions& options);
   void polish(const SmoothingOptions& options, const std::vector<int>& vertices);
 
+ private:
   // Whether quad mesh vertex v may move at all: it has charts to move on or a curve to slide
   // along (pinned vertices — feature corners, ends of curves — and isolated ones stay).
   bool can_move(int v) const;
 
- private:
   struct Setup;
   std::unique_ptr<Setup> setup_;
   enum class Phase { kRelaxAndUntangle, kTangledRegions, kPolish };

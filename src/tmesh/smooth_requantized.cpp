@@ -274,9 +274,13 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
     smoother.run(options, moving);
     smoother.reembed_tangled(options, moving, &placed);
     smoother.polish(options, moving);
-    // Sorted corners of the input's own inverted quads; built for the first candidate.
+    // Sorted corners of the input's own inverted quads (few; often none).
     std::set<std::array<int, 4>> inverted_input;
-    bool inverted_input_built = false;
+    for (std::array<int, 4> c : input.quads) {
+      if (bimdf::detail::scaled_jacobian(input, c) >= 0) continue;
+      std::sort(c.begin(), c.end());
+      inverted_input.insert(c);
+    }
     for (int f = 0; f < t.mesh.num_quads(); ++f) {
       const auto& q = t.mesh.quads[f];
       if (bimdf::detail::degenerate(t.mesh, q)) {
@@ -290,14 +294,6 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
       std::array<int, 4> corners;
       for (int a = 0; a < 4; ++a) corners[a] = t.origin[q[a]].mesh_vertex;
       std::sort(corners.begin(), corners.end());
-      if (!inverted_input_built) {
-        for (std::array<int, 4> c : input.quads) {
-          if (bimdf::detail::scaled_jacobian(input, c) >= 0) continue;
-          std::sort(c.begin(), c.end());
-          inverted_input.insert(c);
-        }
-        inverted_input_built = true;
-      }
       if (!inverted_input.count(corners)) outcome.to_split.push_back(f);
     }
   }
