@@ -38,7 +38,12 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
     if (std::find(options.arc_pattern.begin(), options.arc_pattern.end(), 0) !=
         options.arc_pattern.end())
       throw std::invalid_argument("relaxed quantization cannot fix an arc to 0");
+    if (!options.two_gons.empty())
+      throw std::invalid_argument("relaxed quantization has no two-gons");
   }
+  if (!options.arc_weight.empty() &&
+      static_cast<int>(options.arc_weight.size()) != tmesh.num_arcs())
+    throw std::invalid_argument("arc_weight needs one weight per arc");
   ArcModel model;
   Problem& pb = model.problem;
   const int np = tmesh.num_patches();
@@ -86,21 +91,39 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
       if (options.arc_pattern[a] == 0) arc_lower[a] = arc_upper[a] = 0;
       if (options.arc_pattern[a] == 1) arc_lower[a] = std::max<int64_t>(arc_lower[a], 1);
     }
+  // A two-gon's chains end at its two nodes, which its edge joins.
+  std::vector<int> border_node(tmesh.num_half_arcs(), -1);
+  for (const auto& chains : options.two_gons) {
+    std::array<int, 2> nodes{pb.add_node(0), pb.add_node(0)};
+    for (int c = 0; c < 2; ++c)
+      for (int h : chains[c]) {
+        if (h < 0 || h >= tmesh.num_half_arcs() || !incidence.is_border(h) || border_node[h] >= 0)
+          throw std::invalid_argument("two-gon half-arc " + std::to_string(h) +
+                                      " is not a border half-arc of one two-gon");
+        border_node[h] = nodes[c];
+      }
+    model.two_gon_edge.push_back(
+        pb.add_edge({nodes[0], false}, End{nodes[1], false}, 1, kInfinity, Cost::zero()));
+  }
   model.arc_edge.resize(tmesh.num_arcs());
   for (int a = 0; a < tmesh.num_arcs(); ++a) {
     std::vector<End> ends;
     double across = 0;  // the coarse weight: half the extent of each patch across the arc
     for (int h : {2 * a, 2 * a + 1}) {
       const int p = incidence.half_arc_patch[h];
-      if (p < 0) continue;
+      if (p < 0) {
+        if (border_node[h] >= 0) ends.push_back({border_node[h], true});
+        continue;
+      }
       const int k = incidence.half_arc_side[h];
       ends.push_back({model.side_node[p][k], true});
       across += 0.5 * side_target(tmesh, p, (k + 1) % 4);
     }
     const double t = tmesh.arc_target[a];
+    const double w = options.arc_weight.empty() ? 1.0 : options.arc_weight[a];
     Cost cost = options.coarse                             ? Cost::linear(std::max(across, 1e-3))
-                : options.cost == DeviationCost::Quadratic ? Cost::quad_deviation(t, 1)
-                                                           : Cost::abs_deviation(t, 1);
+                : options.cost == DeviationCost::Quadratic ? Cost::quad_deviation(t, w)
+                                                           : Cost::abs_deviation(t, w);
     model.arc_edge[a] = ends.size() == 2
                             ? pb.add_edge(ends[0], ends[1], arc_lower[a], arc_upper[a], cost)
                             : pb.add_edge(ends[0], std::nullopt, arc_lower[a], arc_upper[a], cost);

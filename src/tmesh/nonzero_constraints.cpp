@@ -25,15 +25,6 @@ struct ImplicationGraph {
   int side_node(int patch, int side) const { return paths + arcs + 4 * patch + side; }
 };
 
-std::vector<int> sorted_arcs(const std::vector<int>& half_arcs) {
-  std::vector<int> arcs;
-  arcs.reserve(half_arcs.size());
-  for (int h : half_arcs) arcs.push_back(TMesh::arc_of(h));
-  std::sort(arcs.begin(), arcs.end());
-  arcs.erase(std::unique(arcs.begin(), arcs.end()), arcs.end());
-  return arcs;
-}
-
 bool is_subset(const std::vector<int>& small, const std::vector<int>& large) {
   return std::includes(large.begin(), large.end(), small.begin(), small.end());
 }
@@ -46,7 +37,7 @@ ImplicationGraph build_implication_graph(const TMesh& tmesh) {
   std::vector<std::vector<int>> path_arcs(g.paths);
   std::vector<std::vector<int>> paths_with_arc(g.arcs);
   for (int m = 0; m < g.paths; ++m) {
-    path_arcs[m] = sorted_arcs(tmesh.nonzero_paths[m]);
+    path_arcs[m] = arcs_along(tmesh.nonzero_paths[m]);
     for (int a : path_arcs[m]) {
       paths_with_arc[a].push_back(m);
       g.out[g.arc_node(a)].push_back(m);
@@ -63,7 +54,7 @@ ImplicationGraph build_implication_graph(const TMesh& tmesh) {
     for (int k = 0; k < 4; ++k) {
       const int s = g.side_node(p, k);
       g.out[s].push_back(g.side_node(p, (k + 2) % 4));
-      const std::vector<int> arcs = sorted_arcs(tmesh.patch_sides[p][k]);
+      const std::vector<int> arcs = arcs_along(tmesh.patch_sides[p][k]);
       for (int a : arcs) g.out[g.arc_node(a)].push_back(s);
       for (int w : paths_with_arc[arcs.front()])
         if (is_subset(arcs, path_arcs[w])) g.out[s].push_back(w);
@@ -74,8 +65,10 @@ ImplicationGraph build_implication_graph(const TMesh& tmesh) {
 }  // namespace
 
 MinOneConstraints greedy_min_one_constraints(const TMesh& tmesh,
-                                             const TMeshIncidence& /*incidence*/) {
+                                             const TMeshIncidence& /*incidence*/,
+                                             std::vector<int>* cover) {
   MinOneConstraints result;
+  if (cover) cover->assign(tmesh.nonzero_paths.size(), -1);
   if (tmesh.nonzero_paths.empty()) return result;
   const ImplicationGraph g = build_implication_graph(tmesh);
   std::vector<char> deleted(g.out.size(), 0);
@@ -83,6 +76,7 @@ MinOneConstraints greedy_min_one_constraints(const TMesh& tmesh,
   // Try-Cover: visit everything reachable from `start` that is not deleted, delete it, and say
   // whether an uncovered path was among it.
   std::vector<int> stack;
+  int element = 0;  // the bound a search would add: sides first, then arcs (see `cover`)
   const auto try_cover = [&](int start) {
     if (deleted[start]) return false;
     bool covered_any = false;
@@ -91,7 +85,10 @@ MinOneConstraints greedy_min_one_constraints(const TMesh& tmesh,
     while (!stack.empty()) {
       const int v = stack.back();
       stack.pop_back();
-      if (v < g.paths) covered_any = true, --uncovered;
+      if (v < g.paths) {
+        covered_any = true, --uncovered;
+        if (cover) (*cover)[v] = element;
+      }
       for (int w : g.out[v])
         if (!deleted[w]) deleted[w] = 1, stack.push_back(w);
     }
@@ -114,6 +111,7 @@ MinOneConstraints greedy_min_one_constraints(const TMesh& tmesh,
                    [&](int a, int b) { return side_target[a] > side_target[b]; });
   for (int i : order) {
     if (uncovered == 0) return result;
+    element = static_cast<int>(result.sides.size());
     if (try_cover(g.side_node(sides[i][0], sides[i][1]))) result.sides.push_back(sides[i]);
   }
   // Paths without a whole side: one of their arcs, longest target first.
@@ -123,9 +121,19 @@ MinOneConstraints greedy_min_one_constraints(const TMesh& tmesh,
                    [&](int a, int b) { return tmesh.arc_target[a] > tmesh.arc_target[b]; });
   for (int a : arcs) {
     if (uncovered == 0) break;
+    element = static_cast<int>(result.sides.size() + result.arcs.size());
     if (try_cover(g.arc_node(a))) result.arcs.push_back(a);
   }
+  if (cover)  // arc bounds by arc id below: renumber theirs
+    for (int& e : *cover)
+      if (e >= static_cast<int>(result.sides.size())) e = -2 - result.arcs[e - result.sides.size()];
   std::sort(result.arcs.begin(), result.arcs.end());
+  if (cover)
+    for (int& e : *cover)
+      if (e <= -2)
+        e = static_cast<int>(result.sides.size() +
+                             (std::lower_bound(result.arcs.begin(), result.arcs.end(), -2 - e) -
+                              result.arcs.begin()));
   return result;
 }
 

@@ -9,13 +9,14 @@
 
 #include "bimdf/solve.hpp"
 #include "core/stopwatch.hpp"
+#include "tmesh/quantize_stages.hpp"
 
 namespace bimdf::tmesh {
 namespace {
 
 // Solves `model` exactly; fills status, objective, solution and lengths of `result`.
 void solve_model(const ArcModel& model, const QuantizeOptions& options, TMeshQuantization& result) {
-  detail::Stopwatch t;
+  bimdf::detail::Stopwatch t;
   Solver solver(model.problem);
   solver.threads(options.threads);
   if (options.time_limit >= 0) solver.time_limit(options.time_limit);
@@ -55,25 +56,19 @@ double target_quads(const TMesh& tmesh) {
   });
 }
 
-TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                 const QuantizeOptions& options) {
-  TMeshQuantization result;
-  detail::Stopwatch t;
-  result.constraints = greedy_min_one_constraints(tmesh, incidence);
-  const MinOneConstraints& extra = options.extra_constraints;
-  result.constraints.arcs.insert(result.constraints.arcs.end(), extra.arcs.begin(),
-                                 extra.arcs.end());
-  result.constraints.sides.insert(result.constraints.sides.end(), extra.sides.begin(),
-                                  extra.sides.end());
-  result.constraints.arcs_two = extra.arcs_two;
-  ArcModelOptions model_options;
+namespace detail {
+
+void run_quantization(const TMesh& tmesh, const TMeshIncidence& incidence,
+                      const MinOneConstraints& constraints, ArcModelOptions model_options,
+                      const QuantizeOptions& options, TMeshQuantization& result) {
+  bimdf::detail::Stopwatch t;
   model_options.cost = options.cost;
   model_options.coarse = options.coarse;
   model_options.side_weight = options.side_weight;
   model_options.relaxed = options.relaxed;
   model_options.relaxed_weight = options.relaxed_weight;
-  ArcModel model = build_arc_model(tmesh, incidence, result.constraints, model_options);
-  result.time_model_s = t.lap();
+  ArcModel model = build_arc_model(tmesh, incidence, constraints, model_options);
+  result.time_model_s += t.lap();
   solve_model(model, options, result);
   if (options.coarse && options.coarse_uniform && !result.arc_length.empty()) {
     // Every coarse length times one integer k: the layout's combinatorics, and so its base
@@ -93,21 +88,40 @@ TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incid
     model_options.arc_pattern.resize(tmesh.num_arcs());
     for (int a = 0; a < tmesh.num_arcs(); ++a)
       model_options.arc_pattern[a] = result.arc_length[a] > 0 ? 1 : 0;
-    model = build_arc_model(tmesh, incidence, result.constraints, model_options);
+    model = build_arc_model(tmesh, incidence, constraints, model_options);
     result.time_model_s += t.lap();
     solve_model(model, options, result);
     // The coarse solution itself satisfies the fixed pattern: this stage cannot be infeasible.
     if (result.arc_length.empty())
       throw std::logic_error("coarse quantization: the fixed zero pattern became infeasible");
   }
+  if (result.arc_length.empty()) return;
+  for (int64_t x : result.arc_length) result.zero_arcs += x == 0;
+}
+
+}  // namespace detail
+
+TMeshQuantization quantize_tmesh(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                 const QuantizeOptions& options) {
+  TMeshQuantization result;
+  bimdf::detail::Stopwatch t;
+  result.constraints = greedy_min_one_constraints(tmesh, incidence);
+  add_constraints(result.constraints, options.extra_constraints);
+  result.time_model_s = t.lap();
+  detail::run_quantization(tmesh, incidence, result.constraints, {}, options, result);
   if (result.arc_length.empty()) return result;
   const std::string error = options.relaxed ? check_relaxed_quantization(tmesh, result.arc_length)
                                             : check_quantization(tmesh, result.arc_length);
   if (!error.empty()) throw std::logic_error("quantization failed its check: " + error);
-  for (int64_t x : result.arc_length) result.zero_arcs += x == 0;
   for (int p = 0; p < tmesh.num_patches(); ++p)
     result.irregular_patches += is_irregular_patch(tmesh, p, result.arc_length);
   return result;
+}
+
+void add_constraints(MinOneConstraints& to, const MinOneConstraints& extra) {
+  to.arcs.insert(to.arcs.end(), extra.arcs.begin(), extra.arcs.end());
+  to.sides.insert(to.sides.end(), extra.sides.begin(), extra.sides.end());
+  to.arcs_two.insert(to.arcs_two.end(), extra.arcs_two.begin(), extra.arcs_two.end());
 }
 
 }  // namespace bimdf::tmesh

@@ -333,6 +333,15 @@ TMeshIncidence validate_tmesh(const TMesh& tmesh, const std::string& source) {
   return incidence;
 }
 
+std::vector<int> arcs_along(const std::vector<int>& half_arcs) {
+  std::vector<int> arcs;
+  arcs.reserve(half_arcs.size());
+  for (int h : half_arcs) arcs.push_back(TMesh::arc_of(h));
+  std::sort(arcs.begin(), arcs.end());
+  arcs.erase(std::unique(arcs.begin(), arcs.end()), arcs.end());
+  return arcs;
+}
+
 int64_t side_length(const TMesh& tmesh, int patch, int side,
                     const std::vector<int64_t>& arc_length) {
   // Callers pass a validated T-mesh and one length per arc; a mismatch is a bug in the caller,

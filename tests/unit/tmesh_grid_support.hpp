@@ -95,10 +95,31 @@ inline GridTMesh random_grid_tmesh(std::mt19937& rng, int columns, int rows, int
 // corner-turning variables c_k ≥ 0 per patch (k: between sides k and k+1), each costing
 // relaxed_weight per unit, with Σ side k = w_(k mod 2) + c_(k−1) + c_k — side k's length is
 // what crosses the patch to side k+2 plus what turns to either neighbour.
+//
+// With `half_arc_paths` (paths of t), the half-arc quantization of §4.3 instead: every arc on
+// one of these paths has a length per half-arc (x_h, each costing half the arc's deviation),
+// sides sum their half-arcs, and along each such path Σ x_h = Σ x_opposite(h) ≥ 1 — whatever
+// `constraints` says. Bounds on a cut arc apply to both of its half-arcs.
 inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weight,
                            const MinOneConstraints* constraints, int cap,
-                           double relaxed_weight = -1) {
+                           double relaxed_weight = -1,
+                           const std::vector<int>* half_arc_paths = nullptr) {
   const bool relaxed = relaxed_weight >= 0;
+  // Length columns: one per arc, then one more per cut arc (its odd half-arc's).
+  std::vector<int> column(t.num_half_arcs());
+  for (int h = 0; h < t.num_half_arcs(); ++h) column[h] = TMesh::arc_of(h);
+  std::vector<double> length_weight(t.num_arcs(), 1.0);
+  std::vector<double> length_target(t.arc_target);
+  if (half_arc_paths)
+    for (int path : *half_arc_paths)
+      for (int h : t.nonzero_paths[path]) {
+        const int a = TMesh::arc_of(h);
+        if (column[2 * a + 1] != a) continue;
+        column[2 * a + 1] = static_cast<int>(length_weight.size());
+        length_weight[a] = 0.5;
+        length_weight.push_back(0.5);
+        length_target.push_back(t.arc_target[a]);
+      }
   std::unique_ptr<Cbc_Model, void (*)(Cbc_Model*)> model(Cbc_newModel(), Cbc_deleteModel);
   Cbc_Model* m = model.get();
   Cbc_setLogLevel(m, 0);
@@ -107,7 +128,7 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
   // Columns: arc lengths x_a, then one width w per patch and side pair (a patch's side 0 / 2
   // or 1 / 3 length, bound to both sides' sums below), then an epigraph variable for each,
   // then (relaxed) the corner variables.
-  const int n = t.num_arcs(), np = t.num_patches(), vars = n + 2 * np;
+  const int n = static_cast<int>(length_weight.size()), np = t.num_patches(), vars = n + 2 * np;
   const int width_cap = cap * n;
   for (int a = 0; a < n; ++a) Cbc_addCol(m, "", relaxed ? 1 : 0, cap, 0, 1, 0, nullptr, nullptr);
   for (int w = 0; w < 2 * np; ++w) Cbc_addCol(m, "", 0, width_cap, 0, 1, 0, nullptr, nullptr);
@@ -117,7 +138,7 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
     for (int c = 0; c < 4 * np; ++c)
       Cbc_addCol(m, "", 0, width_cap, relaxed_weight, 1, 0, nullptr, nullptr);
   std::vector<double> target(vars), weight(vars, 1);
-  for (int a = 0; a < n; ++a) target[a] = t.arc_target[a];
+  for (int a = 0; a < n; ++a) target[a] = length_target[a], weight[a] = length_weight[a];
   const auto side_target = [&](int p, int k) {
     double sum = 0;
     for (int h : t.patch_sides[p][k]) sum += t.arc_target[TMesh::arc_of(h)];
@@ -153,23 +174,34 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
       if (relaxed)
         terms.push_back({corners + 4 * p + (k + 3) % 4, -1}),
             terms.push_back({corners + 4 * p + k, -1});
-      for (int h : t.patch_sides[p][k]) terms.push_back({TMesh::arc_of(h), 1});
+      for (int h : t.patch_sides[p][k]) terms.push_back({column[h], 1});
       add_sum(terms, 'E', 0);
     }
   if (constraints) {
-    for (int a : constraints->arcs) add_sum({{a, 1}}, 'G', 1);
+    for (int a : constraints->arcs)
+      for (int h : {2 * a, 2 * a + 1}) add_sum({{column[h], 1}}, 'G', 1);
     for (const SideRef& s : constraints->sides) {
       std::vector<std::pair<int, double>> terms;
-      for (int h : t.patch_sides[s[0]][s[1]]) terms.push_back({TMesh::arc_of(h), 1});
+      for (int h : t.patch_sides[s[0]][s[1]]) terms.push_back({column[h], 1});
       add_sum(terms, 'G', 1);
     }
   } else {
     for (const auto& path : t.nonzero_paths) {
       std::vector<std::pair<int, double>> terms;
-      for (int h : path) terms.push_back({TMesh::arc_of(h), 1});
+      for (int h : path) terms.push_back({column[h], 1});
       add_sum(terms, 'G', 1);
     }
   }
+  if (half_arc_paths)
+    for (int path : *half_arc_paths) {
+      std::vector<std::pair<int, double>> both, one;
+      for (int h : t.nonzero_paths[path]) {
+        both.push_back({column[h], 1}), both.push_back({column[TMesh::opposite(h)], -1});
+        one.push_back({column[h], 1});
+      }
+      add_sum(both, 'E', 0);
+      add_sum(one, 'G', 1);
+    }
   Cbc_solve(m);
   if (Cbc_isProvenInfeasible(m)) return std::nan("");
   if (!Cbc_isProvenOptimal(m)) throw std::runtime_error("CBC did not prove optimality");

@@ -67,9 +67,15 @@ struct MinOneConstraints {
   int size() const { return static_cast<int>(arcs.size() + sides.size() + arcs_two.size()); }
 };
 
+// Appends `extra`'s bounds to `to`'s.
+void add_constraints(MinOneConstraints& to, const MinOneConstraints& extra);
+
 // Algorithm 2 on the T-mesh's nonzero_paths (`incidence` from validate_tmesh). Side target
 // lengths are their arcs' summed targets. Deterministic: ties broken by patch, side and arc id.
-MinOneConstraints greedy_min_one_constraints(const TMesh& tmesh, const TMeshIncidence& incidence);
+// With `cover`: per path, the bound whose search covered it — an index into the result's
+// sides, or sides.size() + an index into its arcs.
+MinOneConstraints greedy_min_one_constraints(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                             std::vector<int>* cover = nullptr);
 
 struct ArcModelOptions {
   DeviationCost cost = DeviationCost::Quadratic;
@@ -87,6 +93,14 @@ struct ArcModelOptions {
   // patch, so it should cost about what a unit of rounding does; smaller values favour
   // irregular patches, larger ones regular grids.
   double relaxed_weight = 1;
+  // Optional, one entry per arc: the weight of its deviation cost (empty: 1 each). Half-arc
+  // quantization gives each copy of a cut arc ½, so that equal copies cost what the arc did.
+  std::vector<double> arc_weight;
+  // Virtual two-gons (half_arc.hpp): per two-gon, two chains of border half-arcs (its left and
+  // right side). Each chain gets a node where its half-arcs' arc edges end (instead of being
+  // outer edges), and the two nodes an edge of lower bound 1 and no cost, whose flow is then
+  // both chains' length. Not with `relaxed`.
+  std::vector<std::array<std::vector<int>, 2>> two_gons;
 };
 
 struct ArcModel {
@@ -96,6 +110,7 @@ struct ArcModel {
   std::vector<std::array<int, 4>> side_node;  // per patch and side
   // Relaxed only (else empty): per patch, the corner edge between sides k and k+1 (mod 4).
   std::vector<std::array<int, 4>> corner_edge;
+  std::vector<int> two_gon_edge;  // per two-gon: the edge between its two nodes
 };
 
 // Builds the Bi-MDF problem with the min-one constraints as lower bounds of 1.

@@ -103,6 +103,9 @@ struct TMeshIssue {
 // when given, receives what validate_tmesh would return.
 std::optional<TMeshIssue> find_tmesh_issue(const TMesh& tmesh, TMeshIncidence* incidence = nullptr);
 
+// The arcs a sequence of half-arcs (a side, a non-zero path) runs along: sorted, each once.
+std::vector<int> arcs_along(const std::vector<int>& half_arcs);
+
 // The sum of the lengths of a patch side's arcs under `arc_length` (one value per arc).
 int64_t side_length(const TMesh& tmesh, int patch, int side,
                     const std::vector<int64_t>& arc_length);

@@ -1,0 +1,136 @@
+// Half-arc quantization of a quad T-mesh (paper §4.3, Fig. 11–12, Appendix A): the two sides of
+// a non-zero path are quantized separately, so that T-junctions on opposite sides of it may
+// trade places, and the path's own length — not a greedy choice of arcs and sides — carries its
+// min-one constraint.
+//
+// Model (Fig. 12a). Each *relaxed* path is inflated into a virtual two-gon: the T-mesh is cut
+// open along it (inflate_two_gons), every arc of the path becomes two arcs — the left copy,
+// on the patches to the path's left, and the right copy — and every interior vertex of the path
+// two vertices. The cut-open T-mesh T' is an ordinary quad T-mesh whose arc lengths are the
+// half-arc lengths of the input. Its Bi-MDF model is the arc model (quantize.hpp) of T', where the
+// cut half-arcs, instead of being border, join the two nodes of their two-gon, tied by an edge of
+// lower bound 1 whose flow is the path's length: Σ left copies = Σ right copies ≥ 1, exactly
+// the three validity conditions of §4.3 (opposite half-arcs off every path equal, opposite
+// sides of every patch equal, both sides of every path equal) and the path's min-one.
+//
+// Which paths are relaxed (relaxable_paths). The two-gon realises a path's length as one edge,
+// so the deflated T-mesh must place the path's ends where the model measures them; that holds
+// for a path that (a) runs along two or more arcs, none on the border, (b) is straight at each
+// interior vertex (180° on either side: no patch corner, or two, on each side), (c) shares no
+// arc with another path and (d) no interior vertex with another path's interior. A path failing
+// (c) or (d) would need its two-gon pinned at the shared place, and a pinned two-gon's length is
+// a sum of edges, not one edge (§4.3 leaves overlapping paths to the adaptation, which then
+// cannot keep every path's min-one; we do not relax them instead). Paths of one arc are exact
+// without a two-gon (the arc's own lower bound). Every other path keeps the bounds of
+// Algorithm 2 (greedy_min_one_constraints on the whole T-mesh) that cover it, so that any
+// quantization satisfying Algorithm 2's bounds stays feasible: the half-arc optimum is never
+// worse than the greedy one. Identical paths (the same arcs, e.g. walked both ways) count once.
+//
+// Deflation (deflate_two_gons, Appendix A): every two-gon closes again — along each relaxed
+// path, the left copy's vertices and the right copy's vertices are merged in the order of their
+// positions (ties: left first), each run between two consecutive positions becoming one arc of
+// their difference in length. The result is an arc-quantized T-mesh with the same patches, in
+// which the T-junctions of the path's right side have moved to their quantized places and
+// crossings of the path have split into two T-junctions. It depends only on the lengths, not on
+// the order of the paths. Re-embedding is done in the patches' own parameter domains: every
+// patch keeps its rectangle of the input grid, and collapse_and_tessellate (collapse.hpp) closes
+// the two-gons of T' point by point (its `zips`) when it tessellates; the deflated T-mesh
+// carries the topology and the arc quantization, not the geometry.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bimdf/tmesh/quantize.hpp"
+#include "bimdf/tmesh/tmesh.hpp"
+
+namespace bimdf::tmesh {
+
+// A non-zero path cut open (inflate_two_gons): the half-arcs of T' along its two sides, both
+// walked from the path's tail to its head, position by position the same line. `left` lie on
+// the patches left of the path (the input's half-arc ids), `right` are the border half-arcs of
+// the right copies (the patches to the right lie on their opposites).
+struct TwoGon {
+  int path = -1;  // index into the input's nonzero_paths
+  std::vector<int> left, right;
+};
+
+struct InflatedTMesh {
+  // T': the input cut open along every relaxed path. Arcs and vertices of the input keep their
+  // ids (a path's arcs become its left copies, its interior vertices their left copies); the
+  // right copies follow. Its nonzero_paths: the relaxed paths along their left copies, the
+  // others as in the input (re-routed through the right copies where they start or end there).
+  TMesh tmesh;
+  std::vector<TwoGon> two_gons;
+  std::vector<int> arc_origin;     // per T' arc: the input arc it copies
+  std::vector<int> vertex_origin;  // per T' vertex: the input vertex it copies
+  // Per T' arc: the other copy of the same input arc, or −1 for an arc that was not cut.
+  std::vector<int> twin;
+};
+
+// The paths to relax (rules above), as sorted indices into tmesh.nonzero_paths; of identical
+// paths only the first. Deterministic, and independent of the order of the paths.
+std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incidence);
+
+// Cuts the T-mesh open along `paths` (from relaxable_paths; throws std::invalid_argument for a
+// path that breaks its rules). Patch grids and arc chains carry over (a right copy has its
+// arc's chain), so T' validates like the input.
+InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& incidence,
+                               const std::vector<int>& paths);
+
+// The bounds of Algorithm 2 that the half-arc model keeps (see above), in T's ids: those of
+// greedy_min_one_constraints(tmesh) covering a path that is not relaxed and has two or more
+// arcs, plus a min-one bound on the arc of every one-arc path. An arc bound on an arc of a
+// relaxed path becomes bounds on the sides holding its two copies.
+MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                  const std::vector<int>& relaxed);
+
+// Per input half-arc, its length under a quantization of T' (`arc_length`, one per T' arc):
+// an uncut arc gives both of its half-arcs its length, a cut arc each half-arc its copy's.
+std::vector<int64_t> half_arc_lengths(const TMesh& tmesh, const InflatedTMesh& inflated,
+                                      const std::vector<int64_t>& arc_length);
+
+// Checks a half-arc quantization of the input (one length per half-arc; a border half-arc's is
+// ignored), independently of any model: every length ≥ 0; the opposite half-arcs of every arc
+// off the relaxed paths equal; opposite sides of every patch equal (summed over the half-arcs
+// on them); along every relaxed path both sides equal and ≥ 1; every other path ≥ 1 (its
+// arcs' lengths summed, their half-arcs being equal). Returns "" when valid, else the first
+// violation ("path 3: its sides have lengths 4 and 5").
+std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<int>& relaxed,
+                                        const std::vector<int64_t>& half_arc_length);
+
+// A half-arc quantization: the inflated T-mesh T' with its incidence, the quantization of T'
+// (arc lengths per T' arc, bounds in T' ids, model size and times as quantize_tmesh's) and the
+// same as one length per input half-arc.
+struct HalfArcQuantization {
+  std::vector<int> relaxed;  // the input's paths made two-gons (relaxable_paths)
+  InflatedTMesh inflated;
+  TMeshIncidence incidence;  // of inflated.tmesh
+  TMeshQuantization quantization;
+  std::vector<int64_t> half_arc_length;
+};
+
+// Relaxes every relaxable path, keeps half_arc_bounds for the others (plus
+// options.extra_constraints, in T' ids), and solves the arc model of T' with the two-gons
+// exactly (coarse stages as quantize_tmesh). Checks the result twice — check_quantization on T'
+// with every two-gon's sides equal, and check_half_arc_quantization on the input — and throws
+// std::logic_error if either fails (a bug). status Infeasible: no valid half-arc quantization
+// with these bounds exists. options.relaxed throws std::invalid_argument.
+HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                       const QuantizeOptions& options);
+
+// The deflated T-mesh (see above) and its arc quantization: vertices and arcs of the input's
+// positions where a position is shared (no chains or grids), the same patches, every
+// non-zero path along its arcs.
+struct DeflatedTMesh {
+  TMesh tmesh;
+  std::vector<int64_t> arc_length;
+  int reordered_junctions = 0;  // T-junctions of a right side that now sit elsewhere among
+                                // the left side's vertices than in the input
+};
+DeflatedTMesh deflate_two_gons(const InflatedTMesh& inflated,
+                               const std::vector<int64_t>& arc_length);
+
+}  // namespace bimdf::tmesh

@@ -1,0 +1,108 @@
+// quantize_half_arcs and half_arc_bounds (tmesh/half_arc.hpp): the bounds the half-arc model
+// keeps, the arc model of the inflated T-mesh with its two-gons, and both checks.
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "bimdf/tmesh/half_arc.hpp"
+#include "core/stopwatch.hpp"
+#include "tmesh/quantize_stages.hpp"
+
+namespace bimdf::tmesh {
+namespace {
+
+template <class T>
+void sort_unique(std::vector<T>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+// "" when every two-gon's sides have equal lengths under `arc_length` (of T').
+std::string check_two_gons(const InflatedTMesh& inflated, const std::vector<int64_t>& arc_length) {
+  for (const TwoGon& g : inflated.two_gons) {
+    int64_t left = 0, right = 0;
+    for (int h : g.left) left += arc_length[TMesh::arc_of(h)];
+    for (int h : g.right) right += arc_length[TMesh::arc_of(h)];
+    if (left != right)
+      return "the two-gon of path " + std::to_string(g.path) + " has sides " +
+             std::to_string(left) + " and " + std::to_string(right);
+  }
+  return "";
+}
+
+}  // namespace
+
+MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                  const std::vector<int>& relaxed) {
+  std::vector<int> cover;
+  const MinOneConstraints greedy = greedy_min_one_constraints(tmesh, incidence, &cover);
+  std::set<std::vector<int>> relaxed_arcs;
+  std::vector<char> cut(tmesh.num_arcs(), 0);
+  for (int m : relaxed) {
+    relaxed_arcs.insert(arcs_along(tmesh.nonzero_paths[m]));
+    for (int h : tmesh.nonzero_paths[m]) cut[TMesh::arc_of(h)] = 1;
+  }
+  MinOneConstraints out;
+  std::vector<char> keep(greedy.sides.size() + greedy.arcs.size(), 0);
+  for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m) {
+    const std::vector<int> arcs = arcs_along(tmesh.nonzero_paths[m]);
+    if (arcs.size() == 1)
+      out.arcs.push_back(arcs.front());  // exact: the path is its arc
+    else if (!relaxed_arcs.count(arcs))
+      keep[cover[m]] = 1;
+  }
+  for (size_t i = 0; i < greedy.sides.size(); ++i)
+    if (keep[i]) out.sides.push_back(greedy.sides[i]);
+  for (size_t j = 0; j < greedy.arcs.size(); ++j) {
+    if (!keep[greedy.sides.size() + j]) continue;
+    const int a = greedy.arcs[j];
+    if (!cut[a]) {
+      out.arcs.push_back(a);
+      continue;
+    }
+    // Both copies of a cut arc ≥ 1 would undo the cut there; the sides holding them are what
+    // the bound implied.
+    for (int h : {2 * a, 2 * a + 1})
+      out.sides.push_back({incidence.half_arc_patch[h], incidence.half_arc_side[h]});
+  }
+  sort_unique(out.arcs);
+  sort_unique(out.sides);
+  return out;
+}
+
+HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                       const QuantizeOptions& options) {
+  if (options.relaxed)
+    throw std::invalid_argument("half-arc quantization does not combine with relaxed patches");
+  HalfArcQuantization r;
+  TMeshQuantization& q = r.quantization;
+  bimdf::detail::Stopwatch t;
+  r.relaxed = relaxable_paths(tmesh, incidence);
+  r.inflated = inflate_two_gons(tmesh, incidence, r.relaxed);
+  const TMesh& cut = r.inflated.tmesh;
+  r.incidence = validate_tmesh(cut, "<inflated t-mesh>");
+  q.constraints = half_arc_bounds(tmesh, incidence, r.relaxed);
+  add_constraints(q.constraints, options.extra_constraints);
+  ArcModelOptions model;
+  model.arc_weight.assign(cut.num_arcs(), 1.0);
+  for (int a = 0; a < cut.num_arcs(); ++a)
+    if (r.inflated.twin[a] >= 0) model.arc_weight[a] = 0.5;
+  for (const TwoGon& g : r.inflated.two_gons) {
+    std::vector<int> left;  // the left copies' border half-arcs face the two-gon
+    for (int h : g.left) left.push_back(TMesh::opposite(h));
+    model.two_gons.push_back({left, g.right});
+  }
+  q.time_model_s = t.lap();
+  detail::run_quantization(cut, r.incidence, q.constraints, model, options, q);
+  if (q.arc_length.empty()) return r;
+  std::string error = check_quantization(cut, q.arc_length);
+  if (error.empty()) error = check_two_gons(r.inflated, q.arc_length);
+  if (!error.empty()) throw std::logic_error("half-arc quantization failed its check: " + error);
+  r.half_arc_length = half_arc_lengths(tmesh, r.inflated, q.arc_length);
+  error = check_half_arc_quantization(tmesh, r.relaxed, r.half_arc_length);
+  if (!error.empty()) throw std::logic_error("half-arc quantization failed its check: " + error);
+  return r;
+}
+
+}  // namespace bimdf::tmesh

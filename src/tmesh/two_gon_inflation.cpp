@@ -1,0 +1,286 @@
+// Two-gon inflation for half-arc quantization (paper §4.3, Fig. 12a; tmesh/half_arc.hpp): which
+// non-zero paths may be relaxed, the T-mesh cut open along them, and the independent check of a
+// half-arc quantization.
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bimdf/tmesh/half_arc.hpp"
+
+namespace bimdf::tmesh {
+namespace {
+
+// Walking around a vertex through the patches of a T-mesh: each half-arc's place in its patch's
+// counter-clockwise boundary.
+class PatchBoundary {
+ public:
+  PatchBoundary(const TMesh& tmesh, const TMeshIncidence& incidence)
+      : tmesh_(tmesh), incidence_(incidence), index_(tmesh.num_half_arcs(), -1) {
+    for (const auto& sides : tmesh.patch_sides)
+      for (const auto& side : sides)
+        for (size_t i = 0; i < side.size(); ++i) index_[side[i]] = static_cast<int>(i);
+  }
+  bool on_patch(int h) const { return !incidence_.is_border(h); }
+  // Whether h's tail is a corner of h's patch (h starts a side).
+  bool starts_side(int h) const { return index_[h] == 0; }
+  // The half-arc before h in its patch's boundary: it ends where h starts.
+  int previous(int h) const {
+    const int p = incidence_.half_arc_patch[h], k = incidence_.half_arc_side[h];
+    const auto& sides = tmesh_.patch_sides[p];
+    return index_[h] > 0 ? sides[k][index_[h] - 1] : sides[(k + 3) % 4].back();
+  }
+
+ private:
+  const TMesh& tmesh_;
+  const TMeshIncidence& incidence_;
+  std::vector<int> index_;
+};
+
+// The patches around vertex c = tail(first), from `first`'s patch on, turning through each
+// patch's corner or side at c, until the patch whose boundary enters c along `stop`: their
+// angle at c (90° at a corner, 180° inside a side) and the half-arcs leaving c between `first`
+// and `stop` (the arcs on that side of a path through c). `border`: the walk met the border.
+struct Fan {
+  int angle = 0;
+  std::vector<int> outgoing;
+  bool border = false;
+};
+
+Fan fan_between(const TMesh& tmesh, const PatchBoundary& boundary, int first, int stop) {
+  Fan fan;
+  int g = first;
+  for (int steps = 0; steps <= tmesh.num_half_arcs(); ++steps) {
+    if (!boundary.on_patch(g)) break;
+    fan.angle += boundary.starts_side(g) ? 90 : 180;
+    const int e = boundary.previous(g);
+    if (e == stop) return fan;
+    g = TMesh::opposite(e);
+    fan.outgoing.push_back(g);
+  }
+  fan.border = true;
+  return fan;
+}
+
+// Fans on the left and right of path half-arcs `in` (ending at c) and `out` (leaving c).
+Fan left_fan(const TMesh& t, const PatchBoundary& b, int in, int out) {
+  return fan_between(t, b, out, in);
+}
+Fan right_fan(const TMesh& t, const PatchBoundary& b, int in, int out) {
+  return fan_between(t, b, TMesh::opposite(in), TMesh::opposite(out));
+}
+
+// Why path m may not be relaxed, or "" (rules (a)–(d) of half_arc.hpp); `arc_uses` and
+// `interior_uses` count the distinct paths running along each arc / through each vertex.
+std::string relax_issue(const TMesh& t, const TMeshIncidence& inc, const PatchBoundary& b,
+                        const std::vector<int>& path, const std::vector<int>& arc_uses,
+                        const std::vector<int>& interior_uses) {
+  if (path.size() < 2) return "it runs along one arc";
+  if (arcs_along(path).size() != path.size()) return "it runs along an arc twice";
+  std::vector<int> vertices{t.half_arc_tail(path.front())};
+  for (int h : path) vertices.push_back(t.half_arc_head(h));
+  std::sort(vertices.begin(), vertices.end());
+  if (std::adjacent_find(vertices.begin(), vertices.end()) != vertices.end())
+    return "it passes a vertex twice";
+  for (int h : path) {
+    if (inc.is_border(h) || inc.is_border(TMesh::opposite(h))) return "it runs along the border";
+    if (arc_uses[TMesh::arc_of(h)] > 1) return "another path shares its arc";
+  }
+  for (size_t i = 1; i < path.size(); ++i) {
+    const int c = t.half_arc_tail(path[i]);
+    if (interior_uses[c] > 1) return "another path passes its vertex " + std::to_string(c);
+    const Fan left = left_fan(t, b, path[i - 1], path[i]);
+    const Fan right = right_fan(t, b, path[i - 1], path[i]);
+    if (left.border || right.border) return "its vertex " + std::to_string(c) + " is on the border";
+    if (left.angle != 180 || right.angle != 180) return "it turns at vertex " + std::to_string(c);
+  }
+  return "";
+}
+
+// Per path: the index of the path it duplicates (the same arcs; the smallest half-arc sequence
+// among them represents them all), or its own.
+std::vector<int> representatives(const TMesh& t) {
+  const auto& paths = t.nonzero_paths;
+  std::map<std::vector<int>, int> first;
+  std::vector<int> rep(paths.size());
+  for (size_t m = 0; m < paths.size(); ++m) {
+    auto [it, inserted] = first.emplace(arcs_along(paths[m]), static_cast<int>(m));
+    if (!inserted && paths[m] < paths[it->second]) it->second = static_cast<int>(m);
+  }
+  for (size_t m = 0; m < paths.size(); ++m) rep[m] = first.at(arcs_along(paths[m]));
+  return rep;
+}
+
+struct Relaxability {
+  std::vector<int> representative;
+  std::vector<std::string> issue;  // per representative path
+};
+
+Relaxability relaxability(const TMesh& t, const TMeshIncidence& inc) {
+  Relaxability r;
+  r.representative = representatives(t);
+  const auto& paths = t.nonzero_paths;
+  std::vector<int> arc_uses(t.num_arcs(), 0), interior_uses(t.num_vertices(), 0);
+  for (size_t m = 0; m < paths.size(); ++m) {
+    if (r.representative[m] != static_cast<int>(m)) continue;
+    for (int a : arcs_along(paths[m])) ++arc_uses[a];
+    for (size_t i = 1; i < paths[m].size(); ++i) ++interior_uses[t.half_arc_tail(paths[m][i])];
+  }
+  const PatchBoundary boundary(t, inc);
+  r.issue.resize(paths.size());
+  for (size_t m = 0; m < paths.size(); ++m)
+    if (r.representative[m] == static_cast<int>(m))
+      r.issue[m] = relax_issue(t, inc, boundary, paths[m], arc_uses, interior_uses);
+  return r;
+}
+
+}  // namespace
+
+std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incidence) {
+  const Relaxability r = relaxability(tmesh, incidence);
+  std::vector<int> out;
+  for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m)
+    if (r.representative[m] == static_cast<int>(m) && r.issue[m].empty())
+      out.push_back(static_cast<int>(m));
+  return out;
+}
+
+InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& incidence,
+                               const std::vector<int>& paths) {
+  const Relaxability r = relaxability(tmesh, incidence);
+  for (int m : paths) {
+    if (m < 0 || m >= static_cast<int>(tmesh.nonzero_paths.size()))
+      throw std::invalid_argument("inflate_two_gons: no non-zero path " + std::to_string(m));
+    if (r.representative[m] != m)
+      throw std::invalid_argument("inflate_two_gons: path " + std::to_string(m) + " repeats path " +
+                                  std::to_string(r.representative[m]));
+    if (!r.issue[m].empty())
+      throw std::invalid_argument("inflate_two_gons: path " + std::to_string(m) +
+                                  " cannot be relaxed: " + r.issue[m]);
+  }
+  InflatedTMesh out;
+  TMesh& o = out.tmesh;
+  o = tmesh;
+  out.arc_origin.resize(tmesh.num_arcs());
+  out.vertex_origin.resize(tmesh.num_vertices());
+  for (int a = 0; a < tmesh.num_arcs(); ++a) out.arc_origin[a] = a;
+  for (int v = 0; v < tmesh.num_vertices(); ++v) out.vertex_origin[v] = v;
+  out.twin.assign(tmesh.num_arcs(), -1);
+  const bool has_mesh_vertices = !tmesh.vertex_mesh_vertex.empty();
+  const bool has_chains = !tmesh.arc_chain.empty();
+
+  // Interior vertices split first: the arcs on a path's right get the new copy, whatever path
+  // they belong to, so that right copies made below find their ends already moved.
+  const PatchBoundary boundary(tmesh, incidence);
+  std::vector<int> right_copy(tmesh.num_vertices(), -1);
+  for (int m : paths) {
+    const std::vector<int>& path = tmesh.nonzero_paths[m];
+    for (size_t i = 1; i < path.size(); ++i) {
+      const int c = tmesh.half_arc_tail(path[i]);
+      const int copy = o.num_vertices();
+      o.vertices.push_back(tmesh.vertices[c]);
+      if (has_mesh_vertices) o.vertex_mesh_vertex.push_back(tmesh.vertex_mesh_vertex[c]);
+      out.vertex_origin.push_back(c);
+      right_copy[c] = copy;
+      for (int g : right_fan(tmesh, boundary, path[i - 1], path[i]).outgoing)
+        o.arc_ends[TMesh::arc_of(g)][g & 1] = copy;
+    }
+  }
+  for (int m : paths) {
+    const std::vector<int>& path = tmesh.nonzero_paths[m];
+    TwoGon two_gon;
+    two_gon.path = m;
+    for (size_t i = 0; i < path.size(); ++i) {
+      const int h = path[i], a = TMesh::arc_of(h), copy = o.num_arcs();
+      const int from = i == 0 ? o.half_arc_tail(h) : right_copy[tmesh.half_arc_tail(h)];
+      const int to = i + 1 == path.size() ? o.half_arc_head(h) : right_copy[tmesh.half_arc_head(h)];
+      o.arc_ends.push_back({from, to});
+      o.arc_target.push_back(tmesh.arc_target[a]);
+      if (!tmesh.arc_feature.empty()) o.arc_feature.push_back(tmesh.arc_feature[a]);
+      if (has_chains) {
+        std::vector<int> chain = tmesh.arc_chain[a];
+        if (h & 1) std::reverse(chain.begin(), chain.end());
+        o.arc_chain.push_back(std::move(chain));
+      }
+      out.arc_origin.push_back(a);
+      out.twin[a] = copy;
+      out.twin.push_back(a);
+      // The patch right of the path now lies on the copy, walked against the path.
+      const int opposite = TMesh::opposite(h);
+      auto& side =
+          o.patch_sides[incidence.half_arc_patch[opposite]][incidence.half_arc_side[opposite]];
+      *std::find(side.begin(), side.end(), opposite) = 2 * copy + 1;
+      two_gon.left.push_back(h);
+      two_gon.right.push_back(2 * copy);
+    }
+    out.two_gons.push_back(std::move(two_gon));
+  }
+  return out;
+}
+
+std::vector<int64_t> half_arc_lengths(const TMesh& tmesh, const InflatedTMesh& inflated,
+                                      const std::vector<int64_t>& arc_length) {
+  if (arc_length.size() != inflated.arc_origin.size())
+    throw std::invalid_argument("half_arc_lengths: " + std::to_string(arc_length.size()) +
+                                " lengths for " + std::to_string(inflated.arc_origin.size()) +
+                                " arcs of the inflated T-mesh");
+  std::vector<int64_t> out(tmesh.num_half_arcs());
+  for (int a = 0; a < tmesh.num_arcs(); ++a) out[2 * a] = out[2 * a + 1] = arc_length[a];
+  for (const TwoGon& g : inflated.two_gons)
+    for (size_t i = 0; i < g.left.size(); ++i)
+      out[TMesh::opposite(g.left[i])] = arc_length[TMesh::arc_of(g.right[i])];
+  return out;
+}
+
+std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<int>& relaxed,
+                                        const std::vector<int64_t>& half_arc_length) {
+  const auto& H = half_arc_length;
+  if (static_cast<int>(H.size()) != tmesh.num_half_arcs())
+    return "expected " + std::to_string(tmesh.num_half_arcs()) + " half-arc lengths, got " +
+           std::to_string(H.size());
+  std::vector<char> on_side(tmesh.num_half_arcs(), 0), cut(tmesh.num_arcs(), 0);
+  for (const auto& sides : tmesh.patch_sides)
+    for (const auto& side : sides)
+      for (int h : side) on_side[h] = 1;
+  for (int m : relaxed) {
+    if (m < 0 || m >= static_cast<int>(tmesh.nonzero_paths.size()))
+      return "no non-zero path " + std::to_string(m);
+    for (int h : tmesh.nonzero_paths[m]) cut[TMesh::arc_of(h)] = 1;
+  }
+  // A border half-arc has no length of its own: its arc's is the other half's.
+  const auto length = [&](int h) { return on_side[h] ? H[h] : H[TMesh::opposite(h)]; };
+  for (int h = 0; h < tmesh.num_half_arcs(); ++h)
+    if (on_side[h] && H[h] < 0)
+      return "half-arc " + std::to_string(h) + ": negative length " + std::to_string(H[h]);
+  for (int a = 0; a < tmesh.num_arcs(); ++a)
+    if (!cut[a] && length(2 * a) != length(2 * a + 1))
+      return "arc " + std::to_string(a) + ": its half-arcs have lengths " +
+             std::to_string(length(2 * a)) + " and " + std::to_string(length(2 * a + 1)) +
+             " but it lies on no relaxed path";
+  for (int p = 0; p < tmesh.num_patches(); ++p)
+    for (int k = 0; k < 2; ++k) {
+      int64_t x = 0, y = 0;
+      for (int h : tmesh.patch_sides[p][k]) x += H[h];
+      for (int h : tmesh.patch_sides[p][k + 2]) y += H[h];
+      if (x != y)
+        return "patch " + std::to_string(p) + ": sides " + std::to_string(k) + " and " +
+               std::to_string(k + 2) + " have lengths " + std::to_string(x) + " and " +
+               std::to_string(y);
+    }
+  for (int m : relaxed) {
+    int64_t left = 0, right = 0;
+    for (int h : tmesh.nonzero_paths[m]) left += H[h], right += H[TMesh::opposite(h)];
+    if (left != right)
+      return "path " + std::to_string(m) + ": its sides have lengths " + std::to_string(left) +
+             " and " + std::to_string(right);
+  }
+  for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m) {
+    int64_t sum = 0;
+    for (int h : tmesh.nonzero_paths[m]) sum += length(h);
+    if (sum == 0) return "non-zero path " + std::to_string(m) + " has length 0";
+  }
+  return "";
+}
+
+}  // namespace bimdf::tmesh

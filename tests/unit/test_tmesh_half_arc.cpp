@@ -1,0 +1,181 @@
+// Half-arc quantization (tmesh/half_arc.hpp): which paths become two-gons, the cut-open T-mesh,
+// the optimum against a CBC MILP of the half-arc model written directly on the input T-mesh
+// (a length per half-arc on the relaxed paths, sharing nothing with the inflation or the
+// Bi-MDF model), the three validity conditions of §4.3, and never worse than Algorithm 2.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "bimdf/tmesh/from_quad_mesh.hpp"
+#include "bimdf/tmesh/half_arc.hpp"
+#include "bimdf/tmesh/quantize.hpp"
+#include "test_helpers.hpp"
+#include "tmesh_fixtures.hpp"
+#include "tmesh_grid_support.hpp"
+
+namespace bimdf::tmesh {
+namespace {
+
+using gridsupport::GridTMesh;
+using gridsupport::milp_optimum;
+using gridsupport::random_grid_tmesh;
+
+// A 3 × 2 grid (random_grid_tmesh without merges or paths: horizontal arcs first, row by row
+// — arcs 0–2 at y = 0, 3–5 at y = 1, 6–8 at y = 2 — then vertical ones column by column, two
+// per column: arcs 9 + 2i and 10 + 2i at x = i).
+GridTMesh three_by_two() {
+  std::mt19937 rng(2);
+  for (;;) {
+    GridTMesh g = random_grid_tmesh(rng, 3, 2, 0);
+    if (g.tmesh.num_patches() == 6) return g;  // no cells merged
+  }
+}
+
+TEST(HalfArc, RelaxablePathsFollowTheRules) {
+  GridTMesh g = three_by_two();
+  TMesh& t = g.tmesh;
+  t.nonzero_paths = {
+      {2 * 3, 2 * 4},          // 0: y = 1 from x = 0 to 2, through the crossing (1, 1): relaxed
+      {2 * 0, 2 * 1},          // 1: along the border
+      {2 * 5},                 // 2: one arc
+      {2 * 4 + 1, 2 * 3 + 1},  // 3: path 0 walked back: the same arcs
+      {2 * 13, 2 * 14},        // 4: x = 2 from y = 0 to 2, through (2, 1): path 5 passes there too
+      {2 * 4, 2 * 5},          // 5: shares arc 4 with paths 0 and 3
+  };
+  TMeshIncidence inc = validate_tmesh(t);
+  // Path 0 represents itself and path 3 (its half-arc sequence is the smaller), but shares arc
+  // 4 with path 5; paths 4 and 5 cross at (2, 1).
+  EXPECT_EQ(relaxable_paths(t, inc), std::vector<int>{});
+  t.nonzero_paths.pop_back();
+  inc = validate_tmesh(t);
+  EXPECT_EQ(relaxable_paths(t, inc), (std::vector<int>{0, 4}));
+  // Order does not matter: the representative of paths 0 and 3 is chosen by its half-arcs.
+  std::swap(t.nonzero_paths[0], t.nonzero_paths[3]);
+  inc = validate_tmesh(t);
+  EXPECT_EQ(relaxable_paths(t, inc), (std::vector<int>{3, 4}));
+  // A path that turns is not relaxed: up x = 1, then right along y = 2 is on the border, so
+  // up x = 1 from y = 0 and right along y = 1.
+  t.nonzero_paths = {{2 * 11, 2 * 4}};
+  inc = validate_tmesh(t);
+  EXPECT_EQ(relaxable_paths(t, inc), std::vector<int>{});
+  EXPECT_THROW(inflate_two_gons(t, inc, {0}), std::invalid_argument);
+}
+
+TEST(HalfArc, InflationCutsTheMeshOpenAlongEachPath) {
+  GridTMesh g = three_by_two();
+  TMesh& t = g.tmesh;
+  t.nonzero_paths = {{2 * 3, 2 * 4, 2 * 5}};  // y = 1 across the mesh
+  const TMeshIncidence inc = validate_tmesh(t);
+  ASSERT_EQ(relaxable_paths(t, inc), std::vector<int>{0});
+  const InflatedTMesh inflated = inflate_two_gons(t, inc, {0});
+  const TMesh& cut = inflated.tmesh;
+  const TMeshIncidence cut_inc = validate_tmesh(cut);
+  EXPECT_EQ(cut.num_arcs(), t.num_arcs() + 3);
+  EXPECT_EQ(cut.num_vertices(), t.num_vertices() + 2);  // (1, 1) and (2, 1)
+  ASSERT_EQ(inflated.two_gons.size(), 1u);
+  const TwoGon& two_gon = inflated.two_gons[0];
+  EXPECT_EQ(two_gon.left, (std::vector<int>{6, 8, 10}));
+  for (size_t i = 0; i < 3; ++i) {
+    const int copy = TMesh::arc_of(two_gon.right[i]);
+    EXPECT_EQ(inflated.arc_origin[copy], 3 + static_cast<int>(i));
+    EXPECT_EQ(inflated.twin[copy], 3 + static_cast<int>(i));
+    // Both sides face the two-gon: border half-arcs of T'.
+    EXPECT_TRUE(cut_inc.is_border(TMesh::opposite(two_gon.left[i])));
+    EXPECT_TRUE(cut_inc.is_border(two_gon.right[i]));
+  }
+  // The lower row's patches 0–2 now lie on the copies.
+  for (int i = 0; i < 3; ++i)
+    EXPECT_EQ(cut_inc.half_arc_patch[TMesh::opposite(two_gon.right[i])], i);
+  // The vertical arcs at x = 1 and 2 below the path now end at the copies.
+  EXPECT_EQ(inflated.vertex_origin[cut.arc_ends[11][1]], t.arc_ends[11][1]);
+  EXPECT_NE(cut.arc_ends[11][1], t.arc_ends[11][1]);
+  EXPECT_EQ(cut.arc_ends[12][0], t.arc_ends[12][0]);
+}
+
+// Random grid T-meshes: the half-arc optimum equals the CBC oracle of the half-arc model
+// (with the same bounds for the paths that are not relaxed), passes the three validity
+// conditions, and is never worse than Algorithm 2's quantization.
+TEST(HalfArc, OptimumEqualsTheMilpOracleAndNeverLosesToGreedy) {
+  std::mt19937 rng(17);
+  int relaxed = 0, better = 0;
+  for (int trial = 0; trial < testing::scaled(160); ++trial) {
+    GridTMesh g = random_grid_tmesh(rng, 2 + trial % 4, 2 + (trial / 4) % 3, 1 + trial % 6);
+    TMesh& t = g.tmesh;
+    // Short targets on most: arcs collapse, and the paths' min-one binds.
+    if (trial % 4 != 0)
+      for (double& x : t.arc_target) x *= 0.25;
+    const TMeshIncidence inc = validate_tmesh(t);
+    QuantizeOptions o;
+    o.cost = trial % 2 ? DeviationCost::Absolute : DeviationCost::Quadratic;
+    o.side_weight = trial % 3 == 0 ? 0.0 : 1.0 + trial % 4;
+    const HalfArcQuantization h = quantize_half_arcs(t, inc, o);
+    ASSERT_EQ(h.quantization.status, SolveStatus::Optimal) << "trial " << trial;
+    ASSERT_EQ(check_half_arc_quantization(t, h.relaxed, h.half_arc_length), "")
+        << "trial " << trial;
+    const double oracle =
+        milp_optimum(t, o.cost, o.side_weight, &h.quantization.constraints, 12, -1, &h.relaxed);
+    ASSERT_TRUE(testing::relatively_close(h.quantization.objective, oracle))
+        << "trial " << trial << ": " << h.quantization.objective << " vs CBC " << oracle;
+    const TMeshQuantization greedy = quantize_tmesh(t, inc, o);
+    ASSERT_LE(h.quantization.objective, greedy.objective + 1e-9) << "trial " << trial;
+    relaxed += !h.relaxed.empty();
+    better += h.quantization.objective < greedy.objective - 1e-9;
+  }
+  std::printf("%d of %d with relaxed paths, %d better than greedy\n", relaxed, testing::scaled(160),
+              better);
+  EXPECT_GT(relaxed, testing::scaled(160) / 3);
+  EXPECT_GT(better, 0);
+}
+
+// T-meshes traced on random quad meshes, both graphs, plain and coarse: the inflated T-mesh
+// validates, the quantization is valid, and never worse than Algorithm 2's.
+TEST(HalfArc, TracedRandomMeshesNeverLoseToGreedy) {
+  std::mt19937 rng(9);
+  int relaxed = 0;
+  for (uint64_t seed = 0; seed < uint64_t(testing::scaled(120)); ++seed) {
+    TraceOptions trace;
+    trace.density = std::uniform_real_distribution<double>(0.2, 1.0)(rng);
+    if (seed % 2 == 0) trace.max_angle_deg = 10.0 * (1 + seed % 5);
+    const TracedTMesh traced = trace_tmesh(test::random_quad_mesh(seed), trace, "random");
+    const TMesh& t = traced.tmesh;
+    const TMeshIncidence inc = validate_tmesh(t);
+    QuantizeOptions o;
+    o.coarse = seed % 4 == 0;
+    const HalfArcQuantization h = quantize_half_arcs(t, inc, o);
+    ASSERT_EQ(h.quantization.status, SolveStatus::Optimal) << "seed " << seed;
+    ASSERT_EQ(check_half_arc_quantization(t, h.relaxed, h.half_arc_length), "") << "seed " << seed;
+    const TMeshQuantization greedy = quantize_tmesh(t, inc, o);
+    if (o.coarse)
+      ASSERT_LE(h.quantization.coarse_objective, greedy.coarse_objective + 1e-9) << "seed " << seed;
+    else
+      ASSERT_LE(h.quantization.objective, greedy.objective + 1e-9) << "seed " << seed;
+    relaxed += static_cast<int>(h.relaxed.size());
+  }
+  EXPECT_GT(relaxed, 0);
+}
+
+TEST(HalfArc, CheckNamesTheBrokenCondition) {
+  GridTMesh g = three_by_two();
+  TMesh& t = g.tmesh;
+  t.nonzero_paths = {{2 * 3, 2 * 4, 2 * 5}};
+  const TMeshIncidence inc = validate_tmesh(t);
+  const HalfArcQuantization h = quantize_half_arcs(t, inc, {});
+  std::vector<int64_t> H = h.half_arc_length;
+  ASSERT_EQ(check_half_arc_quantization(t, {0}, H), "");
+  H[6] += 1;  // the path's left side grows at arc 3, and patch 3's bottom with it
+  EXPECT_EQ(check_half_arc_quantization(t, {0}, H).substr(0, 8), "patch 3:");
+  H[13] += 1;  // patch 3's top (arc 6, on the border) too: the path's sides differ
+  EXPECT_EQ(check_half_arc_quantization(t, {0}, H),
+            "path 0: its sides have lengths " + std::to_string(H[6] + H[8] + H[10]) + " and " +
+                std::to_string(H[7] + H[9] + H[11]));
+  // Not relaxed, arc 3's half-arcs must be equal.
+  EXPECT_EQ(check_half_arc_quantization(t, {}, H).substr(0, 6), "arc 3:");
+  H[2 * 9 + 1] = -1;
+  EXPECT_EQ(check_half_arc_quantization(t, {0}, H), "half-arc 19: negative length -1");
+}
+
+}  // namespace
+}  // namespace bimdf::tmesh
