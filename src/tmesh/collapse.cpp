@@ -91,17 +91,19 @@ struct Collapser {
     for (int h : tm.patch_sides[p][k]) sum += len[TMesh::arc_of(h)];
     return sum;
   }
-  // The points of side k of patch p by position 0..length (a zero arc puts both of its ends
-  // at one position; they are the same class, so either stands for it).
-  std::vector<int> side_points(int p, int k) const {
+  // The points of a chain of half-arcs (a patch side, a zip's side) by position 0..length (a
+  // zero arc puts both of its ends at one position; they are the same class, so either stands
+  // for it).
+  std::vector<int> chain_points(const std::vector<int>& chain) const {
     std::vector<int> out;
-    for (int h : tm.patch_sides[p][k]) {
+    for (int h : chain) {
       const int64_t x = len[TMesh::arc_of(h)];
       if (out.empty()) out.push_back(half_arc_point(h, 0));
       for (int64_t i = 1; i <= x; ++i) out.push_back(half_arc_point(h, i));
     }
     return out;
   }
+  std::vector<int> side_points(int p, int k) const { return chain_points(tm.patch_sides[p][k]); }
   bool has_grid(int p) const {
     if (!mesh || tm.patch_grid.size() != tm.patch_sides.size() || tm.patch_grid[p].empty() ||
         tm.patch_grid[p].width < 1 || tm.patch_grid[p].height < 1)
@@ -313,7 +315,7 @@ void Collapser::place_irregular_interior(int p) {
 
 CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& incidence,
                                       const std::vector<int64_t>& arc_length, const QuadMesh* mesh,
-                                      bool allow_irregular) {
+                                      bool allow_irregular, const std::vector<Zip>& zips) {
   Collapser c{tmesh, incidence, arc_length, mesh, {}, {}, {}, 0, {}, {}, allow_irregular, {}};
   c.check_input();
   c.number_points();
@@ -353,6 +355,25 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
     int next = c.patch_first[p];
     for (int64_t j = 1; j < H; ++j)
       for (int64_t i = 1; i < W; ++i) at(i, j) = next++;
+  }
+  for (size_t z = 0; z < zips.size(); ++z) {
+    std::array<std::vector<int>, 2> points;
+    for (int s = 0; s < 2; ++s) {
+      for (size_t i = 0; i < zips[z][s].size(); ++i) {
+        const int h = zips[z][s][i];
+        if (h < 0 || h >= tmesh.num_half_arcs() || !incidence.is_border(h) ||
+            (i > 0 && tmesh.half_arc_head(zips[z][s][i - 1]) != tmesh.half_arc_tail(h)))
+          throw std::invalid_argument("zip " + std::to_string(z) + ": half-arc " +
+                                      std::to_string(h) + " is not the next border half-arc");
+      }
+      points[s] = c.chain_points(zips[z][s]);
+    }
+    if (points[0].empty() || points[0].size() != points[1].size())
+      throw std::invalid_argument("zip " + std::to_string(z) + ": its sides have lengths " +
+                                  std::to_string(int64_t(points[0].size()) - 1) + " and " +
+                                  std::to_string(int64_t(points[1].size()) - 1));
+    for (size_t i = 0; i < points[0].size(); ++i)
+      classes.unite(points[0][i], points[1][points[1].size() - 1 - i]);
   }
   if (np > 0 && result.collapsed_patches == np)
     throw CollapseError("every patch would collapse (width or height 0): no quad is left");

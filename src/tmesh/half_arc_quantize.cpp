@@ -88,11 +88,7 @@ HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence&
   model.arc_weight.assign(cut.num_arcs(), 1.0);
   for (int a = 0; a < cut.num_arcs(); ++a)
     if (r.inflated.twin[a] >= 0) model.arc_weight[a] = 0.5;
-  for (const TwoGon& g : r.inflated.two_gons) {
-    std::vector<int> left;  // the left copies' border half-arcs face the two-gon
-    for (int h : g.left) left.push_back(TMesh::opposite(h));
-    model.two_gons.push_back({left, g.right});
-  }
+  for (const TwoGon& g : r.inflated.two_gons) model.two_gons.push_back(two_gon_zip(g));
   q.time_model_s = t.lap();
   detail::run_quantization(cut, r.incidence, q.constraints, model, options, q);
   if (q.arc_length.empty()) return r;

@@ -85,6 +85,8 @@ std::string relax_issue(const TMesh& t, const TMeshIncidence& inc, const PatchBo
     return "it passes a vertex twice";
   for (int h : path) {
     if (inc.is_border(h) || inc.is_border(TMesh::opposite(h))) return "it runs along the border";
+    if (!t.arc_feature.empty() && t.arc_feature[TMesh::arc_of(h)])
+      return "it runs along a feature curve";
     if (arc_uses[TMesh::arc_of(h)] > 1) return "another path shares its arc";
   }
   for (size_t i = 1; i < path.size(); ++i) {
@@ -217,6 +219,14 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
     out.two_gons.push_back(std::move(two_gon));
   }
   return out;
+}
+
+Zip two_gon_zip(const TwoGon& two_gon) {
+  Zip zip;
+  zip[0] = two_gon.right;
+  for (auto h = two_gon.left.rbegin(); h != two_gon.left.rend(); ++h)
+    zip[1].push_back(TMesh::opposite(*h));
+  return zip;
 }
 
 std::vector<int64_t> half_arc_lengths(const TMesh& tmesh, const InflatedTMesh& inflated,

@@ -157,6 +157,136 @@ TEST(HalfArc, TracedRandomMeshesNeverLoseToGreedy) {
   EXPECT_GT(relaxed, 0);
 }
 
+// The arc lengths of T' for a half-arc quantization of the input (half_arc_lengths' inverse).
+std::vector<int64_t> inflated_lengths(const InflatedTMesh& inflated,
+                                      const std::vector<int64_t>& half_arc_length) {
+  std::vector<int64_t> x(inflated.arc_origin.size());
+  for (size_t a = 0; a < x.size(); ++a) x[a] = half_arc_length[2 * inflated.arc_origin[a]];
+  for (const TwoGon& g : inflated.two_gons)
+    for (size_t i = 0; i < g.left.size(); ++i) {
+      x[TMesh::arc_of(g.left[i])] = half_arc_length[g.left[i]];
+      x[TMesh::arc_of(g.right[i])] = half_arc_length[TMesh::opposite(g.left[i])];
+    }
+  return x;
+}
+
+// Quads, vertices and the valence of every vertex, sorted: what two collapses of one
+// quantization must share.
+std::vector<int> mesh_signature(const QuadMesh& m) {
+  std::vector<int> valence(m.num_vertices(), 0);
+  for (const auto& q : m.quads)
+    for (int v : q) ++valence[v];
+  std::sort(valence.begin(), valence.end());
+  valence.push_back(m.num_quads());
+  valence.push_back(m.num_vertices());
+  return valence;
+}
+
+// Per patch and side, the lengths of its arcs in order: the deflated T-mesh up to the
+// numbering of its vertices and arcs (its patches keep the input's ids).
+std::vector<std::vector<int64_t>> side_signature(const DeflatedTMesh& d) {
+  std::vector<std::vector<int64_t>> out;
+  for (const auto& sides : d.tmesh.patch_sides)
+    for (const auto& side : sides) {
+      out.emplace_back();
+      for (int h : side) out.back().push_back(d.arc_length[TMesh::arc_of(h)]);
+    }
+  return out;
+}
+
+// Random grid T-meshes with short targets: the deflated T-mesh validates, carries a valid arc
+// quantization, collapses into the same quad mesh as T' closed by its zips, and does not
+// depend on the order of the paths (10 shuffles, the same half-arc lengths).
+TEST(HalfArc, DeflationIsAValidArcQuantizationInAnyPathOrder) {
+  std::mt19937 rng(23);
+  int reordered = 0, deflated = 0;
+  for (int trial = 0; trial < testing::scaled(150); ++trial) {
+    GridTMesh g = random_grid_tmesh(rng, 2 + trial % 4, 2 + (trial / 4) % 3, 2 + trial % 6);
+    TMesh& t = g.tmesh;
+    for (double& x : t.arc_target) x *= trial % 2 ? 0.3 : 1.0;
+    const TMeshIncidence inc = validate_tmesh(t);
+    const HalfArcQuantization h = quantize_half_arcs(t, inc, {});
+    ASSERT_EQ(h.quantization.status, SolveStatus::Optimal);
+    if (h.relaxed.empty()) continue;
+    ++deflated;
+    const DeflatedTMesh d = deflate_two_gons(h.inflated, h.quantization.arc_length);
+    ASSERT_NO_THROW(validate_tmesh(d.tmesh)) << "trial " << trial;
+    ASSERT_EQ(check_quantization(d.tmesh, d.arc_length), "") << "trial " << trial;
+    reordered += d.reordered_junctions;
+    std::vector<Zip> zips;
+    for (const TwoGon& two_gon : h.inflated.two_gons) zips.push_back(two_gon_zip(two_gon));
+    std::vector<int> zipped, plain;
+    try {
+      zipped =
+          mesh_signature(collapse_and_tessellate(h.inflated.tmesh, h.incidence,
+                                                 h.quantization.arc_length, nullptr, false, zips)
+                             .mesh);
+    } catch (const CollapseError&) {
+      // Not every quantization collapses into a mesh (separation repair is requantize's);
+      // then neither must the deflated T-mesh.
+      EXPECT_THROW(collapse_and_tessellate(d.tmesh, validate_tmesh(d.tmesh), d.arc_length, nullptr),
+                   CollapseError)
+          << "trial " << trial;
+      continue;
+    }
+    plain = mesh_signature(
+        collapse_and_tessellate(d.tmesh, validate_tmesh(d.tmesh), d.arc_length, nullptr).mesh);
+    ASSERT_EQ(zipped, plain) << "trial " << trial;
+    const auto signature = side_signature(d);
+    for (int shuffle = 0; shuffle < 10; ++shuffle) {
+      TMesh s = t;
+      std::shuffle(s.nonzero_paths.begin(), s.nonzero_paths.end(), rng);
+      const TMeshIncidence s_inc = validate_tmesh(s);
+      const InflatedTMesh inflated = inflate_two_gons(s, s_inc, relaxable_paths(s, s_inc));
+      const DeflatedTMesh sd =
+          deflate_two_gons(inflated, inflated_lengths(inflated, h.half_arc_length));
+      ASSERT_EQ(side_signature(sd), signature) << "trial " << trial << ", shuffle " << shuffle;
+      ASSERT_EQ(sd.tmesh.num_vertices(), d.tmesh.num_vertices());
+      ASSERT_EQ(sd.reordered_junctions, d.reordered_junctions);
+    }
+  }
+  std::printf("%d deflated, %d junctions reordered\n", deflated, reordered);
+  EXPECT_GT(deflated, testing::scaled(150) / 4);
+  EXPECT_GT(reordered, 0);
+}
+
+// In the spirit of the paper's Fig. 11: a 3 × 2 grid whose upper row is thin (0.2 against
+// 0.6), a non-zero path up its left border there, and one up x = 2 across both rows. Arc
+// quantization keeps both rows (the left path holds the upper row open everywhere, and the
+// lower row cannot take the whole height alone), six quads. Half-arc quantization lets the
+// line between the rows meet x = 2 at different heights on its two sides: west of it the lower
+// row collapses, east of it the upper one, three quads — every path still non-zero.
+TEST(HalfArc, JunctionsTradePlacesAcrossAPathWhereArcsCannot) {
+  GridTMesh g = three_by_two();
+  TMesh& t = g.tmesh;
+  for (int a = 0; a < 9; ++a) t.arc_target[a] = 1;
+  for (int i = 0; i <= 3; ++i) t.arc_target[9 + 2 * i] = 0.6, t.arc_target[10 + 2 * i] = 0.2;
+  t.nonzero_paths = {{2 * 10}, {2 * 13, 2 * 14}};
+  const TMeshIncidence inc = validate_tmesh(t);
+  const TMeshQuantization greedy = quantize_tmesh(t, inc, {});
+  EXPECT_EQ(greedy.zero_arcs, 0);
+  EXPECT_EQ(collapse_and_tessellate(t, inc, greedy.arc_length, nullptr).mesh.num_quads(), 6);
+
+  const HalfArcQuantization h = quantize_half_arcs(t, inc, {});
+  ASSERT_EQ(h.relaxed, std::vector<int>{1});
+  EXPECT_LT(h.quantization.objective, greedy.objective);
+  // Along x = 2, going up: west (left) side 0 then 1, east side 1 then 0.
+  EXPECT_EQ(h.half_arc_length[2 * 13], 0);
+  EXPECT_EQ(h.half_arc_length[2 * 14], 1);
+  EXPECT_EQ(h.half_arc_length[2 * 13 + 1], 1);
+  EXPECT_EQ(h.half_arc_length[2 * 14 + 1], 0);
+  const Zip zip = two_gon_zip(h.inflated.two_gons[0]);
+  const CollapsedMesh zipped = collapse_and_tessellate(
+      h.inflated.tmesh, h.incidence, h.quantization.arc_length, nullptr, false, {zip});
+  EXPECT_EQ(zipped.mesh.num_quads(), 3);
+  const DeflatedTMesh d = deflate_two_gons(h.inflated, h.quantization.arc_length);
+  EXPECT_EQ(d.reordered_junctions, 1);  // the east end of the line between the rows
+  EXPECT_EQ(check_quantization(d.tmesh, d.arc_length), "");
+  EXPECT_EQ(collapse_and_tessellate(d.tmesh, validate_tmesh(d.tmesh), d.arc_length, nullptr)
+                .mesh.num_quads(),
+            3);
+}
+
 TEST(HalfArc, CheckNamesTheBrokenCondition) {
   GridTMesh g = three_by_two();
   TMesh& t = g.tmesh;

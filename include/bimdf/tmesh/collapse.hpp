@@ -73,13 +73,22 @@ struct CollapsedMesh {
   int irregular_patches = 0;  // patches tessellated by a pattern (allow_irregular only)
 };
 
+// Zips (half-arc quantization, half_arc.hpp): pairs of chains of border half-arcs of equal
+// length — the two sides of a two-gon, each walked with the two-gon on its left as patch sides
+// are, so that they run opposite ways — whose points are identified position by position, the
+// first chain's from its start with the second's from its end, as a patch of width 0
+// identifies its long sides. A zipped point keeps the patches of both (CollapsedVertex).
+using Zip = std::array<std::vector<int>, 2>;
+
 // Collapses and tessellates. `mesh` is the quad mesh the T-mesh was traced on (nullptr when
 // the T-mesh has no grids). Throws std::invalid_argument if `arc_length` has the wrong size, a
 // negative entry, or opposite sides of a patch differ — unless allow_irregular, which then
-// requires of such a patch every side ≥ 1 and an even perimeter; CollapseError as above.
+// requires of such a patch every side ≥ 1 and an even perimeter — or a zip's chains are not
+// chains of the T-mesh's half-arcs of equal length; CollapseError as above.
 CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& incidence,
                                       const std::vector<int64_t>& arc_length, const QuadMesh* mesh,
-                                      bool allow_irregular = false);
+                                      bool allow_irregular = false,
+                                      const std::vector<Zip>& zips = {});
 
 // A conforming quad layout read off a quad mesh: its base complex (separatrices traced
 // straight through regular vertices from every singular vertex, and the border, cut the

@@ -15,7 +15,9 @@
 //
 // Which paths are relaxed (relaxable_paths). The two-gon realises a path's length as one edge,
 // so the deflated T-mesh must place the path's ends where the model measures them; that holds
-// for a path that (a) runs along two or more arcs, none on the border, (b) is straight at each
+// for a path that (a) runs along two or more arcs, none on the border or a feature curve (whose
+// two sides the smoothing keeps apart, and across whose sharp edge T-junctions should not
+// trade places), (b) is straight at each
 // interior vertex (180° on either side: no patch corner, or two, on each side), (c) shares no
 // arc with another path and (d) no interior vertex with another path's interior. A path failing
 // (c) or (d) would need its two-gon pinned at the shared place, and a pinned two-gon's length is
@@ -43,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "bimdf/tmesh/collapse.hpp"
 #include "bimdf/tmesh/quantize.hpp"
 #include "bimdf/tmesh/tmesh.hpp"
 
@@ -56,6 +59,11 @@ struct TwoGon {
   int path = -1;  // index into the input's nonzero_paths
   std::vector<int> left, right;
 };
+
+// The two-gon's zip for collapse_and_tessellate (collapse.hpp): its two sides of border
+// half-arcs, each walked with the two-gon on its left — the right copies' from the path's tail
+// to its head, then the left copies' back.
+Zip two_gon_zip(const TwoGon& two_gon);
 
 struct InflatedTMesh {
   // T': the input cut open along every relaxed path. Arcs and vertices of the input keep their
