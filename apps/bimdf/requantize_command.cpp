@@ -92,6 +92,14 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                   "grows); `strict-uniform`: uniform, never refitted")
       ->default_val("uniform")
       ->check(CLI::IsMember({"fitted", "uniform", "strict-uniform"}));
+  cmd->add_option("--half-arc", o.half_arc,
+                  "Half-arc quantization (paper §4.3): `exact` quantizes the two sides of every "
+                  "non-zero path that crosses and overlaps no other separately, so that "
+                  "T-junctions on opposite sides of it may trade places, with the path's own "
+                  "length kept ≥ 1 (the others keep Algorithm 2's bounds); `off`: arcs only")
+      ->default_val("off")
+      ->check(CLI::IsMember({"exact", "off"}))
+      ->excludes(relaxed);
   cmd->add_option("--max-angle", o.max_angle,
                   "Trace the angle-bounded extended motorcycle graph (Lyon et al. 2021): "
                   "separatrices may deviate from the input's grid lines by at most this many "
@@ -151,6 +159,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
   ro.quantize.coarse_uniform = o.coarse_lengths != "fitted";
   ro.refit_uniform = o.coarse_lengths == "uniform";
   ro.quantize.relaxed = o.relaxed;
+  ro.half_arc = o.half_arc == "exact";
   ro.quantize.relaxed_weight = o.relaxed_weight;
   ro.quantize.threads = o.threads;
   ro.smoothing = o.smoothing;
@@ -223,6 +232,15 @@ int run_requantize(const RequantizeCommandOptions& o) {
   j["repair_rounds"] = r.repair_rounds;
   j["repair_constraints"] = r.repair_constraints.size();
   j["zero_arcs"] = q.zero_arcs;
+  j["half_arc"] = o.half_arc;
+  if (r.half_arc) {
+    j["half_arc_paths"] = r.half_arc->relaxed.size();
+    j["reordered_junctions"] = r.reordered_junctions;
+    j["adapted_arcs"] = r.adapted_arcs;
+    s << "half-arc      " << r.half_arc->relaxed.size() << " of " << tm.nonzero_paths.size()
+      << " non-zero paths quantized on both sides; " << r.reordered_junctions
+      << " T-junctions moved across a path, " << r.adapted_arcs << " arcs after adaptation\n";
+  }
   if (o.coarse) j["coarse_objective"] = q.coarse_objective;
   if (o.coarse && q.coarse_factor > 0) j["coarse_factor"] = q.coarse_factor;
   if (o.coarse) j["coarse_lengths"] = q.coarse_factor > 0 ? "uniform" : "fitted";

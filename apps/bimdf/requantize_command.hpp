@@ -24,6 +24,7 @@ struct RequantizeCommandOptions {
   std::string cost = "quadratic";
   bool coarse = false;
   std::string coarse_lengths = "uniform";
+  std::string half_arc = "off";  // --half-arc exact|off
   double max_angle = -1;  // < 0: not given (--coarse then uses tmesh::kDefaultCoarseMaxAngle)
   int threads = 1;
   bool relaxed = false;       // --relaxed: irregular quad patches allowed at a cost

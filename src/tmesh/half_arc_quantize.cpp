@@ -4,6 +4,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "bimdf/tmesh/half_arc.hpp"
 #include "core/stopwatch.hpp"
@@ -71,32 +72,60 @@ MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& inci
   return out;
 }
 
-HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                       const QuantizeOptions& options) {
+HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence) {
+  HalfArcSetup setup;
+  setup.relaxed = relaxable_paths(tmesh, incidence);
+  setup.inflated = inflate_two_gons(tmesh, incidence, setup.relaxed);
+  setup.incidence = validate_tmesh(setup.inflated.tmesh, "<inflated t-mesh>");
+  setup.bounds = half_arc_bounds(tmesh, incidence, setup.relaxed);
+  return setup;
+}
+
+TMeshIncidence glued_incidence(const HalfArcSetup& setup) {
+  TMeshIncidence glued = setup.incidence;
+  for (const TwoGon& g : setup.inflated.two_gons)
+    for (size_t i = 0; i < g.left.size(); ++i) {
+      const int left_border = TMesh::opposite(g.left[i]),
+                right_patched = TMesh::opposite(g.right[i]);
+      for (auto [border, across] :
+           {std::pair{left_border, right_patched}, std::pair{g.right[i], g.left[i]}}) {
+        glued.half_arc_patch[border] = setup.incidence.half_arc_patch[across];
+        glued.half_arc_side[border] = setup.incidence.half_arc_side[across];
+      }
+    }
+  return glued;
+}
+
+TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOptions& options) {
   if (options.relaxed)
     throw std::invalid_argument("half-arc quantization does not combine with relaxed patches");
-  HalfArcQuantization r;
-  TMeshQuantization& q = r.quantization;
+  TMeshQuantization q;
   bimdf::detail::Stopwatch t;
-  r.relaxed = relaxable_paths(tmesh, incidence);
-  r.inflated = inflate_two_gons(tmesh, incidence, r.relaxed);
-  const TMesh& cut = r.inflated.tmesh;
-  r.incidence = validate_tmesh(cut, "<inflated t-mesh>");
-  q.constraints = half_arc_bounds(tmesh, incidence, r.relaxed);
+  const TMesh& cut = setup.inflated.tmesh;
+  q.constraints = setup.bounds;
   add_constraints(q.constraints, options.extra_constraints);
   ArcModelOptions model;
   model.arc_weight.assign(cut.num_arcs(), 1.0);
   for (int a = 0; a < cut.num_arcs(); ++a)
-    if (r.inflated.twin[a] >= 0) model.arc_weight[a] = 0.5;
-  for (const TwoGon& g : r.inflated.two_gons) model.two_gons.push_back(two_gon_zip(g));
+    if (setup.inflated.twin[a] >= 0) model.arc_weight[a] = 0.5;
+  for (const TwoGon& g : setup.inflated.two_gons) model.two_gons.push_back(two_gon_zip(g));
   q.time_model_s = t.lap();
-  detail::run_quantization(cut, r.incidence, q.constraints, model, options, q);
-  if (q.arc_length.empty()) return r;
+  detail::run_quantization(cut, setup.incidence, q.constraints, model, options, q);
+  if (q.arc_length.empty()) return q;
   std::string error = check_quantization(cut, q.arc_length);
-  if (error.empty()) error = check_two_gons(r.inflated, q.arc_length);
+  if (error.empty()) error = check_two_gons(setup.inflated, q.arc_length);
   if (!error.empty()) throw std::logic_error("half-arc quantization failed its check: " + error);
-  r.half_arc_length = half_arc_lengths(tmesh, r.inflated, q.arc_length);
-  error = check_half_arc_quantization(tmesh, r.relaxed, r.half_arc_length);
+  return q;
+}
+
+HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                       const QuantizeOptions& options) {
+  HalfArcQuantization r;
+  static_cast<HalfArcSetup&>(r) = prepare_half_arcs(tmesh, incidence);
+  r.quantization = quantize_inflated(r, options);
+  if (r.quantization.arc_length.empty()) return r;
+  r.half_arc_length = half_arc_lengths(tmesh, r.inflated, r.quantization.arc_length);
+  const std::string error = check_half_arc_quantization(tmesh, r.relaxed, r.half_arc_length);
   if (!error.empty()) throw std::logic_error("half-arc quantization failed its check: " + error);
   return r;
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -21,8 +22,7 @@ namespace {
 // r.density_factor (the previous round's, after a repair added bounds). Leaves tm's targets
 // scaled by the factor of the quantization returned (the closest one).
 TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
-                                    const TMeshIncidence& incidence,
-                                    const QuantizeOptions& quantize,
+                                    const std::function<TMeshQuantization()>& quantize,
                                     const RequantizeOptions& options, RequantizeResult& r) {
   const double wanted = static_cast<double>(options.target_quads);
   // Every quantization the search runs, kept until it has chosen one (a few, each O(arcs)).
@@ -31,7 +31,7 @@ TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
       wanted, r.density_factor, options.calibration_tolerance, options.calibration_solves,
       std::max(1.0, options.max_density_change), options.max_density_reach, [&](double factor) {
         for (size_t a = 0; a < base.size(); ++a) tm.arc_target[a] = base[a] * factor;
-        runs.emplace_back(factor, quantize_tmesh(tm, incidence, quantize));
+        runs.emplace_back(factor, quantize());
         const TMeshQuantization& q = runs.back().second;
         return q.arc_length.empty() ? -1.0 : quantized_quads(tm, q.arc_length);
       });
@@ -90,11 +90,28 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                   const RequantizeOptions& options, const std::string& source) {
   RequantizeResult r;
   r.traced = std::move(traced);
-  TMesh& tm = r.traced.tmesh;
   bimdf::detail::Stopwatch t;
-  r.incidence = validate_tmesh(tm, source);
+  r.incidence = validate_tmesh(r.traced.tmesh, source);
+  // The T-mesh every stage below works on: the input, or it cut open along the two-gons, whose
+  // repairs and smoothing see the cuts glued (the zips close them in the collapse).
+  TMeshIncidence glued;
+  std::vector<Zip> zips;
+  if (options.half_arc) {
+    if (options.quantize.relaxed)
+      throw std::invalid_argument("half-arc quantization does not combine with relaxed patches");
+    r.half_arc = prepare_half_arcs(r.traced.tmesh, r.incidence);
+    glued = glued_incidence(*r.half_arc);
+    for (const TwoGon& g : r.half_arc->inflated.two_gons) zips.push_back(two_gon_zip(g));
+  }
+  TMesh& tm = r.half_arc ? r.half_arc->inflated.tmesh : r.traced.tmesh;
+  const TMeshIncidence& cut_incidence = r.half_arc ? r.half_arc->incidence : r.incidence;
+  const TMeshIncidence& incidence = r.half_arc ? glued : r.incidence;
   const bool on_mesh = mesh && !tm.patch_grid.empty();
   QuantizeOptions quantize = options.quantize;
+  const auto quantize_once = [&] {
+    return r.half_arc ? quantize_inflated(*r.half_arc, quantize)
+                      : quantize_tmesh(tm, r.incidence, quantize);
+  };
   // Calibrated again after every repair: the bounds a repair adds raise the quad count.
   const bool calibrate = options.target_quads > 0 && !quantize.coarse;
   const std::vector<double> base = tm.arc_target;
@@ -113,8 +130,8 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     r.time_smoothing_s = smoothing_s;
   };
   for (;;) {
-    r.quantization = calibrate ? calibrate_density(tm, base, r.incidence, quantize, options, r)
-                               : quantize_tmesh(tm, r.incidence, quantize);
+    r.quantization =
+        calibrate ? calibrate_density(tm, base, quantize_once, options, r) : quantize_once();
     r.time_quantize_s += t.lap();
     if (r.quantization.arc_length.empty()) {
       if (smoothed) restore_smoothed();
@@ -122,17 +139,17 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     }
     // A border loop shorter than 3 is found on the lengths alone (and its collapse would be
     // refused): solve again before collapsing.
-    if (add_border_loop_bounds(tm, r.incidence, r.quantization.arc_length,
+    if (add_border_loop_bounds(tm, incidence, r.quantization.arc_length,
                                quantize.extra_constraints)) {
       ++r.repair_rounds;
       continue;
     }
-    r.collapsed = collapse_and_tessellate(tm, r.incidence, r.quantization.arc_length,
-                                          on_mesh ? mesh : nullptr, options.quantize.relaxed);
+    r.collapsed = collapse_and_tessellate(tm, cut_incidence, r.quantization.arc_length,
+                                          on_mesh ? mesh : nullptr, options.quantize.relaxed, zips);
     r.time_collapse_s += t.lap();
     // Both checks run, so that one round bounds every fault found.
-    const bool merged = add_separation_bounds(tm, r.incidence, r.quantization.arc_length,
-                                              r.collapsed, quantize.extra_constraints);
+    const bool merged = add_separation_bounds(tm, incidence, r.quantization.arc_length, r.collapsed,
+                                              quantize.extra_constraints);
     const bool folded =
         add_valence_bounds(tm, r.quantization.arc_length, r.collapsed, quantize.extra_constraints);
     if (merged || folded) {
@@ -142,7 +159,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     r.repair_constraints = quantize.extra_constraints;
     if (!on_mesh) break;
     const SmoothedQuads left =
-        smooth_requantized(*mesh, tm, r.incidence, r.traced.feature_edges, r.traced.feature_corners,
+        smooth_requantized(*mesh, tm, incidence, r.traced.feature_edges, r.traced.feature_corners,
                            r.collapsed, options.smoothing);
     r.time_smoothing_s += t.lap();
     const int bad = left.inverted + left.degenerate;
@@ -168,6 +185,14 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   }
   r.coarse_refitted = options.quantize.coarse && options.quantize.coarse_uniform &&
                       r.quantization.coarse_factor == 0;
+  if (r.half_arc && !r.quantization.arc_length.empty()) {
+    const DeflatedTMesh d = deflate_two_gons(r.half_arc->inflated, r.quantization.arc_length);
+    r.adapted_arcs = d.tmesh.num_arcs();
+    r.reordered_junctions = d.reordered_junctions;
+    // The input keeps the calibrated targets too (its arcs are T''s first ones).
+    for (int a = 0; a < r.traced.tmesh.num_arcs(); ++a)
+      r.traced.tmesh.arc_target[a] = tm.arc_target[a];
+  }
   return r;
 }
 

@@ -109,23 +109,38 @@ std::vector<int64_t> half_arc_lengths(const TMesh& tmesh, const InflatedTMesh& i
 std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<int>& relaxed,
                                         const std::vector<int64_t>& half_arc_length);
 
-// A half-arc quantization: the inflated T-mesh T' with its incidence, the quantization of T'
-// (arc lengths per T' arc, bounds in T' ids, model size and times as quantize_tmesh's) and the
-// same as one length per input half-arc.
-struct HalfArcQuantization {
+// The half-arc model of a T-mesh, before any solve: every relaxable path made a two-gon, T'
+// with its incidence, and the bounds kept for the other paths (half_arc_bounds, T' ids).
+struct HalfArcSetup {
   std::vector<int> relaxed;  // the input's paths made two-gons (relaxable_paths)
   InflatedTMesh inflated;
   TMeshIncidence incidence;  // of inflated.tmesh
+  MinOneConstraints bounds;
+};
+HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence);
+
+// T''s incidence with every half-arc facing a two-gon counted on the patch across it (the side
+// its twin's other half-arc lies on): what the separation repairs and smoothing must see, for
+// which a cut is no border. (Collapse and the model need the real one.)
+TMeshIncidence glued_incidence(const HalfArcSetup& setup);
+
+// Solves the arc model of T' with the two-gons and `setup.bounds` plus
+// options.extra_constraints (T' ids) exactly (coarse stages as quantize_tmesh) and checks the
+// result on T' (check_quantization, and every two-gon's sides equal): a failure throws
+// std::logic_error (a bug). status Infeasible: no valid half-arc quantization with these bounds
+// exists. options.relaxed throws std::invalid_argument.
+TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOptions& options);
+
+// A half-arc quantization: the setup, the quantization of T' (arc lengths per T' arc, bounds in
+// T' ids, model size and times as quantize_tmesh's) and the same as one length per input
+// half-arc.
+struct HalfArcQuantization : HalfArcSetup {
   TMeshQuantization quantization;
   std::vector<int64_t> half_arc_length;
 };
 
-// Relaxes every relaxable path, keeps half_arc_bounds for the others (plus
-// options.extra_constraints, in T' ids), and solves the arc model of T' with the two-gons
-// exactly (coarse stages as quantize_tmesh). Checks the result twice — check_quantization on T'
-// with every two-gon's sides equal, and check_half_arc_quantization on the input — and throws
-// std::logic_error if either fails (a bug). status Infeasible: no valid half-arc quantization
-// with these bounds exists. options.relaxed throws std::invalid_argument.
+// prepare_half_arcs, then quantize_inflated, then check_half_arc_quantization on the input
+// (std::logic_error if it fails).
 HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
                                        const QuantizeOptions& options);
 

@@ -3,12 +3,14 @@
 // tessellation (collapse.hpp), smoothing on the input surface with features and border kept.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "bimdf/mesh.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "bimdf/tmesh/collapse.hpp"
 #include "bimdf/tmesh/from_quad_mesh.hpp"
+#include "bimdf/tmesh/half_arc.hpp"
 #include "bimdf/tmesh/quantize.hpp"
 
 namespace bimdf::tmesh {
@@ -45,6 +47,10 @@ struct RequantizeOptions {
   // then grows (separatrices no longer meet exactly); RequantizeResult::coarse_refitted says so.
   // Counts as one of the max_split_repairs tries.
   bool refit_uniform = true;
+  // Half-arc quantization (half_arc.hpp): the T-mesh is cut open along every relaxable
+  // non-zero path and quantized with its two-gons; repairs, calibration, collapse (the two-gons
+  // zipped) and smoothing then work on the cut T-mesh. Not with quantize.relaxed.
+  bool half_arc = false;
 };
 
 struct RequantizeResult {
@@ -66,6 +72,12 @@ struct RequantizeResult {
   double calibration_floor = -1;
   // Whether refit_uniform replaced the uniform coarse lengths by fitted ones.
   bool coarse_refitted = false;
+  // With half_arc: the cut T-mesh that `quantization`, `repair_constraints` and `collapsed`
+  // refer to (its arcs and vertices), the paths made two-gons, and the deflated T-mesh's
+  // arcs and reordered T-junctions (deflate_two_gons). Without: empty, 0.
+  std::optional<HalfArcSetup> half_arc;
+  int adapted_arcs = 0;
+  int reordered_junctions = 0;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
 
