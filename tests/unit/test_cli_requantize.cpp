@@ -302,6 +302,41 @@ TEST_F(Requantize, CoarseLayoutsKeepEverySingularity) {
   EXPECT_GE(repaired["--coarse --max-angle 10"] + repaired["--coarse --max-angle 45"], 1);
 }
 
+// Half-arc quantization end to end on random meshes: every singularity kept, a manifold mesh,
+// the coarse layout no larger than the input's base complex, and — where neither run needed a
+// repair, so that both solved the same problem — a coarse objective no worse than greedy's.
+TEST_F(Requantize, HalfArcKeepsEverySingularity) {
+  int compared = 0, smaller = 0, relaxed = 0;
+  for (uint64_t seed = 0; seed < 16; ++seed)
+    for (const char* args : {"--coarse --max-angle 20", "--coarse --max-angle 45", "--scale 2"}) {
+      const std::string where = "seed " + std::to_string(seed) + ", " + args;
+      const json greedy = requantize(test::random_quad_mesh(seed), args);
+      const json j =
+          requantize(test::random_quad_mesh(seed), std::string(args) + " --half-arc exact");
+      ASSERT_EQ(j.value("status", ""), "optimal") << where;
+      EXPECT_EQ(j["half_arc"], "exact");
+      EXPECT_EQ(j["singularities_out"], j["singularities_in"]) << where;
+      const QuadMeshMetrics m = measure_quad_mesh(output());
+      EXPECT_TRUE(m.manifold()) << where;
+      relaxed += j["half_arc_paths"].get<int>() > 0;
+      EXPECT_GE(j["adapted_arcs"].get<int>(), 1) << where;
+      if (!std::string(args).starts_with("--coarse")) continue;
+      EXPECT_LE(m.base_complex_faces, j["base_complex_in"].get<int>()) << where;
+      if (j["repair_rounds"] == 0 && greedy["repair_rounds"] == 0) {
+        ++compared;
+        EXPECT_LE(j["coarse_objective"].get<double>(),
+                  greedy["coarse_objective"].get<double>() + 1e-9)
+            << where;
+      }
+      smaller += j["base_complex_out"].get<int>() < greedy["base_complex_out"].get<int>();
+    }
+  std::cout << relaxed << " runs relaxed paths; " << compared << " objectives compared; " << smaller
+            << " coarse layouts smaller than greedy's\n";
+  EXPECT_GT(relaxed, 20);
+  EXPECT_GT(compared, 12);
+  EXPECT_GT(smaller, 0);
+}
+
 // Feature curves that separatrices cross: the smooth subdivided cube (8 valence-3 corners,
 // base complex 6) with two grid loops round its sides marked as features, one row above the
 // bottom corners and one below the top ones. Each corner's vertical separatrix crosses both
@@ -464,6 +499,13 @@ TEST_F(Requantize, BadInput) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
             "error: nothing to write: give -o OUT.obj (or --layout-out, --tmesh-out, --json)\n");
+  EXPECT_FALSE(fs::exists(path("out.obj")));
+  r = run("requantize " + grid + " -o " + path("out.obj") + " --half-arc both");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--half-arc"), std::string::npos) << r.err;
+  r = run("requantize " + grid + " -o " + path("out.obj") + " --half-arc exact --relaxed");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("excludes"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(path("out.obj")));
 }
 
