@@ -92,14 +92,24 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                   "grows); `strict-uniform`: uniform, never refitted")
       ->default_val("uniform")
       ->check(CLI::IsMember({"fitted", "uniform", "strict-uniform"}));
-  cmd->add_option("--half-arc", o.half_arc,
-                  "Half-arc quantization (paper §4.3): `exact` quantizes the two sides of every "
-                  "non-zero path that crosses and overlaps no other separately, so that "
-                  "T-junctions on opposite sides of it may trade places, with the path's own "
-                  "length kept ≥ 1 (the others keep Algorithm 2's bounds); `off`: arcs only")
-      ->default_val("off")
-      ->check(CLI::IsMember({"exact", "off"}))
-      ->excludes(relaxed);
+  auto* half_arc =
+      cmd->add_option("--half-arc", o.half_arc,
+                      "Half-arc quantization (paper §4.3): the two sides of every non-zero path "
+                      "that crosses and overlaps no other are quantized separately, so that "
+                      "T-junctions on opposite sides of it may trade places. `exact`: the path's "
+                      "own length is kept ≥ 1 (the other paths keep Algorithm 2's bounds); "
+                      "`bounded`: every path keeps Algorithm 2's bounds and each unit by which "
+                      "the two sides drift apart at a vertex costs --reorder-weight; `off`: "
+                      "arcs only")
+          ->default_val("off")
+          ->check(CLI::IsMember({"exact", "bounded", "off"}))
+          ->excludes(relaxed);
+  cmd->add_option("--reorder-weight", o.reorder_weight,
+                  "With --half-arc bounded: the cost of each unit of drift between a path's two "
+                  "sides at one of its vertices (0: free; large: arcs only)")
+      ->default_val(1.0)
+      ->check(CLI::NonNegativeNumber)
+      ->needs(half_arc);
   cmd->add_option("--max-angle", o.max_angle,
                   "Trace the angle-bounded extended motorcycle graph (Lyon et al. 2021): "
                   "separatrices may deviate from the input's grid lines by at most this many "
@@ -159,7 +169,8 @@ int run_requantize(const RequantizeCommandOptions& o) {
   ro.quantize.coarse_uniform = o.coarse_lengths != "fitted";
   ro.refit_uniform = o.coarse_lengths == "uniform";
   ro.quantize.relaxed = o.relaxed;
-  ro.half_arc = o.half_arc == "exact";
+  ro.half_arc = o.half_arc != "off";
+  ro.reorder_weight = o.half_arc == "bounded" ? o.reorder_weight : -1;
   ro.quantize.relaxed_weight = o.relaxed_weight;
   ro.quantize.threads = o.threads;
   ro.smoothing = o.smoothing;

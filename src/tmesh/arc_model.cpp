@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "bimdf/tmesh/quantize.hpp"
 
@@ -91,19 +92,35 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
       if (options.arc_pattern[a] == 0) arc_lower[a] = arc_upper[a] = 0;
       if (options.arc_pattern[a] == 1) arc_lower[a] = std::max<int64_t>(arc_lower[a], 1);
     }
-  // A two-gon's chains end at its two nodes, which its edge joins.
-  std::vector<int> border_node(tmesh.num_half_arcs(), -1);
-  for (const auto& chains : options.two_gons) {
-    std::array<int, 2> nodes{pb.add_node(0), pb.add_node(0)};
+  // Where a two-gon's half-arcs end: exact, at the node of their side, which the two-gon's edge
+  // joins; bounded, at the ladder's node of their position, entering from the first side and
+  // leaving to the second.
+  std::vector<End> border_end(tmesh.num_half_arcs(), End{-1, true});
+  const bool ladder = options.two_gon_reorder_weight >= 0;
+  for (const auto& sides : options.two_gons) {
+    const size_t n = sides[0].size();
+    if (ladder && sides[1].size() != n)
+      throw std::invalid_argument("a bounded two-gon needs as many half-arcs on either side");
+    std::vector<int> nodes;
+    for (size_t i = 0; i < (ladder ? n : 2); ++i) nodes.push_back(pb.add_node(0));
     for (int c = 0; c < 2; ++c)
-      for (int h : chains[c]) {
-        if (h < 0 || h >= tmesh.num_half_arcs() || !incidence.is_border(h) || border_node[h] >= 0)
+      for (size_t i = 0; i < sides[c].size(); ++i) {
+        const int h = sides[c][i];
+        if (h < 0 || h >= tmesh.num_half_arcs() || !incidence.is_border(h) ||
+            border_end[h].node >= 0)
           throw std::invalid_argument("two-gon half-arc " + std::to_string(h) +
                                       " is not a border half-arc of one two-gon");
-        border_node[h] = nodes[c];
+        border_end[h] = ladder ? End{nodes[c == 0 ? i : n - 1 - i], c == 0} : End{nodes[c], true};
       }
-    model.two_gon_edge.push_back(
-        pb.add_edge({nodes[0], false}, End{nodes[1], false}, 1, kInfinity, Cost::zero()));
+    if (!ladder) {
+      model.two_gon_edge.push_back(
+          pb.add_edge({nodes[0], false}, End{nodes[1], false}, 1, kInfinity, Cost::zero()));
+      continue;
+    }
+    for (size_t i = 0; i + 1 < n; ++i)
+      for (const auto& [from, to] : {std::pair{nodes[i], nodes[i + 1]}, {nodes[i + 1], nodes[i]}})
+        pb.add_edge({from, false}, End{to, true}, 0, kInfinity,
+                    Cost::linear(options.two_gon_reorder_weight));
   }
   model.arc_edge.resize(tmesh.num_arcs());
   for (int a = 0; a < tmesh.num_arcs(); ++a) {
@@ -112,7 +129,7 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
     for (int h : {2 * a, 2 * a + 1}) {
       const int p = incidence.half_arc_patch[h];
       if (p < 0) {
-        if (border_node[h] >= 0) ends.push_back({border_node[h], true});
+        if (border_end[h].node >= 0) ends.push_back(border_end[h]);
         continue;
       }
       const int k = incidence.half_arc_side[h];

@@ -35,7 +35,7 @@ std::string check_two_gons(const InflatedTMesh& inflated, const std::vector<int6
 }  // namespace
 
 MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                  const std::vector<int>& relaxed) {
+                                  const std::vector<int>& relaxed, bool bounded) {
   std::vector<int> cover;
   const MinOneConstraints greedy = greedy_min_one_constraints(tmesh, incidence, &cover);
   std::set<std::vector<int>> relaxed_arcs;
@@ -45,39 +45,41 @@ MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& inci
     for (int h : tmesh.nonzero_paths[m]) cut[TMesh::arc_of(h)] = 1;
   }
   MinOneConstraints out;
-  std::vector<char> keep(greedy.sides.size() + greedy.arcs.size(), 0);
+  // Per bound of Algorithm 2: 1 if it covers a path kept by bounds, 2 if a relaxed one (bounded).
+  std::vector<int> keep(greedy.sides.size() + greedy.arcs.size(), 0);
   for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m) {
     const std::vector<int> arcs = arcs_along(tmesh.nonzero_paths[m]);
     if (arcs.size() == 1)
       out.arcs.push_back(arcs.front());  // exact: the path is its arc
     else if (!relaxed_arcs.count(arcs))
-      keep[cover[m]] = 1;
+      keep[cover[m]] |= 1;
+    else if (bounded)
+      keep[cover[m]] |= 2;
   }
   for (size_t i = 0; i < greedy.sides.size(); ++i)
     if (keep[i]) out.sides.push_back(greedy.sides[i]);
   for (size_t j = 0; j < greedy.arcs.size(); ++j) {
-    if (!keep[greedy.sides.size() + j]) continue;
-    const int a = greedy.arcs[j];
-    if (!cut[a]) {
-      out.arcs.push_back(a);
-      continue;
-    }
-    // Both copies of a cut arc ≥ 1 would undo the cut there; the sides holding them are what
-    // the bound implied.
-    for (int h : {2 * a, 2 * a + 1})
-      out.sides.push_back({incidence.half_arc_patch[h], incidence.half_arc_side[h]});
+    const int why = keep[greedy.sides.size() + j], a = greedy.arcs[j];
+    if (why && !cut[a]) out.arcs.push_back(a);
+    if (!cut[a]) continue;
+    if (why & 1)
+      for (int h : {2 * a, 2 * a + 1})
+        out.sides.push_back({incidence.half_arc_patch[h], incidence.half_arc_side[h]});
+    if (why & 2) out.arcs.push_back(a);
   }
   sort_unique(out.arcs);
   sort_unique(out.sides);
   return out;
 }
 
-HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence) {
+HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
+                               double reorder_weight) {
   HalfArcSetup setup;
   setup.relaxed = relaxable_paths(tmesh, incidence);
   setup.inflated = inflate_two_gons(tmesh, incidence, setup.relaxed);
   setup.incidence = validate_tmesh(setup.inflated.tmesh, "<inflated t-mesh>");
-  setup.bounds = half_arc_bounds(tmesh, incidence, setup.relaxed);
+  setup.bounds = half_arc_bounds(tmesh, incidence, setup.relaxed, reorder_weight >= 0);
+  setup.reorder_weight = reorder_weight;
   return setup;
 }
 
@@ -109,6 +111,7 @@ TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOpt
   for (int a = 0; a < cut.num_arcs(); ++a)
     if (setup.inflated.twin[a] >= 0) model.arc_weight[a] = 0.5;
   for (const TwoGon& g : setup.inflated.two_gons) model.two_gons.push_back(two_gon_zip(g));
+  model.two_gon_reorder_weight = setup.reorder_weight;
   q.time_model_s = t.lap();
   detail::run_quantization(cut, setup.incidence, q.constraints, model, options, q);
   if (q.arc_length.empty()) return q;
@@ -119,9 +122,9 @@ TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOpt
 }
 
 HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                       const QuantizeOptions& options) {
+                                       const QuantizeOptions& options, double reorder_weight) {
   HalfArcQuantization r;
-  static_cast<HalfArcSetup&>(r) = prepare_half_arcs(tmesh, incidence);
+  static_cast<HalfArcSetup&>(r) = prepare_half_arcs(tmesh, incidence, reorder_weight);
   r.quantization = quantize_inflated(r, options);
   if (r.quantization.arc_length.empty()) return r;
   r.half_arc_length = half_arc_lengths(tmesh, r.inflated, r.quantization.arc_length);

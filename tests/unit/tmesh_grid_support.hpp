@@ -99,11 +99,15 @@ inline GridTMesh random_grid_tmesh(std::mt19937& rng, int columns, int rows, int
 // With `half_arc_paths` (paths of t), the half-arc quantization of §4.3 instead: every arc on
 // one of these paths has a length per half-arc (x_h, each costing half the arc's deviation),
 // sides sum their half-arcs, and along each such path Σ x_h = Σ x_opposite(h) ≥ 1 — whatever
-// `constraints` says. Bounds on a cut arc apply to both of its half-arcs.
+// `constraints` says. A bound on a cut arc applies to the half-arc its path runs along (the
+// left copy, as in the inflated T-mesh). With reorder_weight ≥ 0 (bounded two-gons), instead
+// of the path's ≥ 1 row: per interior vertex i of the path, the offset Σ_{j ≤ i} (x_h_j −
+// x_opposite(h_j)) = d⁺ − d⁻ with d± ≥ 0 costing reorder_weight each.
 inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weight,
                            const MinOneConstraints* constraints, int cap,
                            double relaxed_weight = -1,
-                           const std::vector<int>* half_arc_paths = nullptr) {
+                           const std::vector<int>* half_arc_paths = nullptr,
+                           double reorder_weight = -1) {
   const bool relaxed = relaxed_weight >= 0;
   // Length columns: one per arc, then one more per cut arc (its odd half-arc's).
   std::vector<int> column(t.num_half_arcs());
@@ -177,9 +181,13 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
       for (int h : t.patch_sides[p][k]) terms.push_back({column[h], 1});
       add_sum(terms, 'E', 0);
     }
+  std::vector<int> path_half(t.num_arcs(), -1);  // per cut arc: its path's half-arc
+  if (half_arc_paths)
+    for (int path : *half_arc_paths)
+      for (int h : t.nonzero_paths[path]) path_half[TMesh::arc_of(h)] = h;
   if (constraints) {
     for (int a : constraints->arcs)
-      for (int h : {2 * a, 2 * a + 1}) add_sum({{column[h], 1}}, 'G', 1);
+      add_sum({{path_half[a] >= 0 ? column[path_half[a]] : a, 1}}, 'G', 1);
     for (const SideRef& s : constraints->sides) {
       std::vector<std::pair<int, double>> terms;
       for (int h : t.patch_sides[s[0]][s[1]]) terms.push_back({column[h], 1});
@@ -192,15 +200,26 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
       add_sum(terms, 'G', 1);
     }
   }
+  int offsets = 0;  // offset columns d⁺, d⁻ follow all others
+  const int first_offset = Cbc_getNumCols(m);
   if (half_arc_paths)
     for (int path : *half_arc_paths) {
       std::vector<std::pair<int, double>> both, one;
-      for (int h : t.nonzero_paths[path]) {
+      const std::vector<int>& half_arcs = t.nonzero_paths[path];
+      for (size_t i = 0; i < half_arcs.size(); ++i) {
+        const int h = half_arcs[i];
         both.push_back({column[h], 1}), both.push_back({column[TMesh::opposite(h)], -1});
         one.push_back({column[h], 1});
+        if (reorder_weight < 0 || i + 1 == half_arcs.size()) continue;
+        for (int sign : {1, -1}) {
+          Cbc_addCol(m, "", 0, 1e30, reorder_weight, 1, 0, nullptr, nullptr);
+          both.push_back({first_offset + offsets++, -sign});
+        }
+        add_sum(both, 'E', 0);  // the offset at vertex i + 1
+        both.resize(both.size() - 2);
       }
       add_sum(both, 'E', 0);
-      add_sum(one, 'G', 1);
+      if (reorder_weight < 0) add_sum(one, 'G', 1);
     }
   Cbc_solve(m);
   if (Cbc_isProvenInfeasible(m)) return std::nan("");
@@ -210,6 +229,7 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
   for (int v = 0; v < vars; ++v) objective += c(v, std::round(x[v]));
   if (relaxed)
     for (int k = 0; k < 4 * np; ++k) objective += relaxed_weight * std::round(x[corners + k]);
+  for (int k = 0; k < offsets; ++k) objective += reorder_weight * std::round(x[first_offset + k]);
   return objective;
 }
 

@@ -89,11 +89,15 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
                                const std::vector<int>& paths);
 
 // The bounds of Algorithm 2 that the half-arc model keeps (see above), in T's ids: those of
-// greedy_min_one_constraints(tmesh) covering a path that is not relaxed and has two or more
-// arcs, plus a min-one bound on the arc of every one-arc path. An arc bound on an arc of a
-// relaxed path becomes bounds on the sides holding its two copies.
+// greedy_min_one_constraints(tmesh) covering a path of two or more arcs that is not relaxed
+// (`bounded`: any path of two or more arcs, as a bounded two-gon has no edge carrying its
+// length), plus a min-one bound on the arc of every one-arc path. An arc bound on a cut arc —
+// both of whose copies ≥ 1 would undo the cut — becomes bounds on the sides holding its two
+// copies where it covers a path that is not relaxed (it implies that path through those sides),
+// and a bound on its left copy (the arc's own id in T') where it covers a relaxed one (whose
+// left copies sum to its length).
 MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                  const std::vector<int>& relaxed);
+                                  const std::vector<int>& relaxed, bool bounded = false);
 
 // Per input half-arc, its length under a quantization of T' (`arc_length`, one per T' arc):
 // an uncut arc gives both of its half-arcs its length, a cut arc each half-arc its copy's.
@@ -111,13 +115,20 @@ std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<in
 
 // The half-arc model of a T-mesh, before any solve: every relaxable path made a two-gon, T'
 // with its incidence, and the bounds kept for the other paths (half_arc_bounds, T' ids).
+//
+// `reorder_weight` < 0: exact two-gons (Fig. 12a). ≥ 0: bounded ones (Fig. 12b): every unit by
+// which the two sides of a path drift apart at one of its vertices costs this much (0: free,
+// large: an arc quantization), and every path keeps Algorithm 2's bounds instead of its
+// two-gon's min-one — T-junctions trade places only where that pays for itself.
 struct HalfArcSetup {
   std::vector<int> relaxed;  // the input's paths made two-gons (relaxable_paths)
   InflatedTMesh inflated;
   TMeshIncidence incidence;  // of inflated.tmesh
   MinOneConstraints bounds;
+  double reorder_weight = -1;
 };
-HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence);
+HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
+                               double reorder_weight = -1);
 
 // T''s incidence with every half-arc facing a two-gon counted on the patch across it (the side
 // its twin's other half-arc lies on): what the separation repairs and smoothing must see, for
@@ -142,7 +153,7 @@ struct HalfArcQuantization : HalfArcSetup {
 // prepare_half_arcs, then quantize_inflated, then check_half_arc_quantization on the input
 // (std::logic_error if it fails).
 HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                       const QuantizeOptions& options);
+                                       const QuantizeOptions& options, double reorder_weight = -1);
 
 // The deflated T-mesh (see above) and its arc quantization: vertices and arcs of the input's
 // positions where a position is shared (no chains or grids), the same patches, every

@@ -96,11 +96,17 @@ struct ArcModelOptions {
   // Optional, one entry per arc: the weight of its deviation cost (empty: 1 each). Half-arc
   // quantization gives each copy of a cut arc ½, so that equal copies cost what the arc did.
   std::vector<double> arc_weight;
-  // Virtual two-gons (half_arc.hpp): per two-gon, two chains of border half-arcs (its left and
-  // right side). Each chain gets a node where its half-arcs' arc edges end (instead of being
-  // outer edges), and the two nodes an edge of lower bound 1 and no cost, whose flow is then
-  // both chains' length. Not with `relaxed`.
+  // Virtual two-gons (half_arc.hpp): per two-gon, its two sides, chains of border half-arcs
+  // each walked with the two-gon on its left (a Zip, collapse.hpp: the first from the path's
+  // tail, the second back from its head). Their arcs' edges end at the two-gon (instead of being
+  // outer edges). With two_gon_reorder_weight < 0 (exact, Fig. 12a) each side gets a node and
+  // the two nodes an edge of lower bound 1 and no cost, whose flow is then both sides' length.
+  // With a weight w ≥ 0 (bounded, Fig. 12b) the two-gon is a ladder instead: a node per
+  // position i along the path, where the i-th half-arc of one side enters and the other's
+  // leaves, and between consecutive nodes the offset d (how far the sides' vertices there have
+  // drifted apart, either way) at cost w·|d|; no min-one. Not with `relaxed`.
   std::vector<std::array<std::vector<int>, 2>> two_gons;
+  double two_gon_reorder_weight = -1;
 };
 
 struct ArcModel {
@@ -110,7 +116,7 @@ struct ArcModel {
   std::vector<std::array<int, 4>> side_node;  // per patch and side
   // Relaxed only (else empty): per patch, the corner edge between sides k and k+1 (mod 4).
   std::vector<std::array<int, 4>> corner_edge;
-  std::vector<int> two_gon_edge;  // per two-gon: the edge between its two nodes
+  std::vector<int> two_gon_edge;  // exact two-gons: per two-gon, the edge between its nodes
 };
 
 // Builds the Bi-MDF problem with the min-one constraints as lower bounds of 1.

@@ -51,6 +51,9 @@ struct RequantizeOptions {
   // non-zero path and quantized with its two-gons; repairs, calibration, collapse (the two-gons
   // zipped) and smoothing then work on the cut T-mesh. Not with quantize.relaxed.
   bool half_arc = false;
+  // With half_arc: < 0 exact two-gons; ≥ 0 bounded ones, each unit of drift between a path's
+  // two sides at one of its vertices costing this much (HalfArcSetup::reorder_weight).
+  double reorder_weight = -1;
 };
 
 struct RequantizeResult {
