@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "core/union_find.hpp"
 #include "tmesh/collapse_check.hpp"
 #include "tmesh/irregular_patch.hpp"
+#include "tmesh/zip_placement.hpp"
 
 namespace bimdf::tmesh {
 namespace {
@@ -73,7 +75,8 @@ struct Collapser {
   // vertex of its pattern.
   std::vector<std::vector<int>> grid;
   bool allow_irregular = false;
-  std::vector<quant::QuadPattern> pattern;  // per patch: its pattern if irregular (else empty)
+  std::vector<quant::QuadPattern> pattern;     // per patch: its pattern if irregular (else empty)
+  std::optional<detail::ZipPlacement> zipped;  // with zips and a mesh
   bool irregular(int p) const { return !pattern[p].quads.empty(); }
 
   int arc_point(int a, int64_t k) const {
@@ -120,6 +123,8 @@ struct Collapser {
   void number_points();
   void place_vertices_and_arcs();
   void place_patch_interior(int p);
+  std::array<std::vector<Vec2>, 4> side_shifts(int p) const;
+  void shift_sides_off_zips(int p, const std::array<std::vector<Vec2>, 4>& shift);
   void place_irregular_interior(int p);
   Vec2 side_coordinate(int p, int k, int64_t position) const;
 };
@@ -199,6 +204,14 @@ void Collapser::place_vertices_and_arcs() {
         mesh && a < static_cast<int>(tm.arc_chain.size()) && tm.arc_chain[a].size() >= 2
             ? &tm.arc_chain[a]
             : nullptr;
+    if (chain && zipped && zipped->on_zip(a)) {
+      // Both sides' points at the mean of their places on the line; so are the T-mesh
+      // vertices inside it (T-junctions moved along it).
+      for (int64_t k = 0; k <= x; ++k)
+        if ((k > 0 && k < x) || zipped->inside(a, k))
+          point_position[arc_point(a, k)] = zipped->arc_point(*mesh, a, k);
+      continue;
+    }
     for (int64_t k = 1; k < x; ++k) {
       Vec3& at = point_position[arc_point(a, k)];
       if (!chain) {
@@ -247,10 +260,79 @@ Vec2 Collapser::side_coordinate(int p, int k, int64_t position) const {
   }
 }
 
+// The shifts of a patch's sides by the zips along them (zip_placement.hpp), as grid vectors
+// per side position, blended so that the four sides agree at the corners: a side's own shift
+// along a zip, plus what its corners' shifts leave, linearly between them. Empty when no zip
+// shifts the patch.
+std::array<std::vector<Vec2>, 4> Collapser::side_shifts(int p) const {
+  std::array<std::vector<Vec2>, 4> shift;
+  if (!zipped || !has_grid(p)) return shift;
+  static constexpr std::array<Vec2, 4> kDirection{{{1, 0}, {0, 1}, {-1, 0}, {0, -1}}};
+  bool any = false;
+  for (int k = 0; k < 4; ++k) {
+    const int64_t length = side_length(p, k);
+    shift[k].assign(length + 1, Vec2{0, 0});
+    std::vector<char> set(length + 1, 0);
+    int64_t out = 0;
+    for (int h : tm.patch_sides[p][k]) {
+      const int64_t x = len[TMesh::arc_of(h)];
+      for (int64_t q = 0; q <= x; ++q) {
+        if (set[out + q]) continue;
+        set[out + q] = 1;
+        const double d = zipped->shift(h, q);
+        any = any || d != 0;
+        shift[k][out + q] = {d * kDirection[k][0], d * kDirection[k][1]};
+      }
+      out += x;
+    }
+  }
+  if (!any) return {};
+  std::array<Vec2, 4> corner;  // corner k: where side k starts and side k − 1 ends
+  for (int k = 0; k < 4; ++k) {
+    const Vec2& start = shift[k].front();
+    const Vec2& end = shift[(k + 3) % 4].back();
+    corner[k] = {start[0] + end[0], start[1] + end[1]};
+  }
+  for (int k = 0; k < 4; ++k) {
+    const size_t n = shift[k].size() - 1;
+    const Vec2 first = shift[k].front(), last = shift[k].back();
+    for (size_t i = 0; i <= n; ++i) {
+      const double t = n > 0 ? double(i) / double(n) : 0;
+      for (int d = 0; d < 2; ++d)
+        shift[k][i][d] +=
+            (1 - t) * (corner[k][d] - first[d]) + t * (corner[(k + 1) % 4][d] - last[d]);
+    }
+  }
+  return shift;
+}
+
+// The points of arcs off the zips on a shifted patch's sides: shifted with it, so that an arc
+// meeting a moved T-junction bends towards it rather than the quads beside it shearing.
+void Collapser::shift_sides_off_zips(int p, const std::array<std::vector<Vec2>, 4>& shift) {
+  for (int k = 0; k < 4; ++k) {
+    int64_t out = 0;
+    for (int h : tm.patch_sides[p][k]) {
+      const int a = TMesh::arc_of(h);
+      const int64_t x = len[a];
+      if (!zipped->on_zip(a))
+        for (int64_t q = 1; q < x; ++q) {
+          const Vec2 uv = side_coordinate(p, k, out + q);
+          const Vec2& d = shift[k][out + q];
+          point_position[half_arc_point(h, q)] =
+              detail::point_on_grid(*mesh, tm.patch_grid[p], {uv[0] + d[0], uv[1] + d[1]});
+        }
+      out += x;
+    }
+  }
+}
+
 // Interior grid points of a non-degenerate patch: a Coons patch over its sides, in the input
-// grid's coordinates (then bilinear on the input quad there) or in 3D.
+// grid's coordinates (then bilinear on the input quad there) or in 3D; along zips, plus the
+// Coons patch of its sides' shifts.
 void Collapser::place_patch_interior(int p) {
   const int W = static_cast<int>(size[p][0]), H = static_cast<int>(size[p][1]);
+  const std::array<std::vector<Vec2>, 4> shift = side_shifts(p);
+  if (!shift[0].empty()) shift_sides_off_zips(p, shift);
   if (W < 2 || H < 2) return;
   const std::vector<int>& ids = grid[p];
   const auto id = [&](int i, int j) { return ids[size_t(j) * (W + 1) + i]; };
@@ -260,10 +342,22 @@ void Collapser::place_patch_interior(int p) {
       bottom[i] = side_coordinate(p, 0, i), top[i] = side_coordinate(p, 2, W - i);
     for (int j = 0; j <= H; ++j)
       right[j] = side_coordinate(p, 1, j), left[j] = side_coordinate(p, 3, H - j);
+    std::vector<Vec2> bottom_d, top_d, left_d, right_d;
+    if (!shift[0].empty()) {
+      for (int i = 0; i <= W; ++i)
+        bottom_d.push_back(shift[0][i]), top_d.push_back(shift[2][W - i]);
+      for (int j = 0; j <= H; ++j)
+        right_d.push_back(shift[1][j]), left_d.push_back(shift[3][H - j]);
+    }
     for (int j = 1; j < H; ++j)
-      for (int i = 1; i < W; ++i)
-        point_position[id(i, j)] =
-            detail::point_on_grid(*mesh, tm.patch_grid[p], coons(bottom, top, left, right, i, j));
+      for (int i = 1; i < W; ++i) {
+        Vec2 uv = coons(bottom, top, left, right, i, j);
+        if (!bottom_d.empty()) {
+          const Vec2 d = coons(bottom_d, top_d, left_d, right_d, i, j);
+          uv = {uv[0] + d[0], uv[1] + d[1]};
+        }
+        point_position[id(i, j)] = detail::point_on_grid(*mesh, tm.patch_grid[p], uv);
+      }
     return;
   }
   // Without a grid: the mean position of the points at each side position.
@@ -316,7 +410,7 @@ void Collapser::place_irregular_interior(int p) {
 CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& incidence,
                                       const std::vector<int64_t>& arc_length, const QuadMesh* mesh,
                                       bool allow_irregular, const std::vector<Zip>& zips) {
-  Collapser c{tmesh, incidence, arc_length, mesh, {}, {}, {}, 0, {}, {}, allow_irregular, {}};
+  Collapser c{tmesh, incidence, arc_length, mesh, {}, {}, {}, 0, {}, {}, allow_irregular, {}, {}};
   c.check_input();
   c.number_points();
   const int np = tmesh.num_patches();
@@ -414,6 +508,7 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
   }
 
   // Positions: every point's own, then each vertex at the mean of its points.
+  if (mesh && !zips.empty()) c.zipped.emplace(tmesh, arc_length, zips);
   c.place_vertices_and_arcs();
   for (int p = 0; p < np; ++p)
     if (c.irregular(p))

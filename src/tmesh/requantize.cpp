@@ -96,12 +96,22 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   // repairs and smoothing see the cuts glued (the zips close them in the collapse).
   TMeshIncidence glued;
   std::vector<Zip> zips;
+  std::vector<std::vector<int>> more_charts;
   if (options.half_arc) {
     if (options.quantize.relaxed)
       throw std::invalid_argument("half-arc quantization does not combine with relaxed patches");
     r.half_arc = prepare_half_arcs(r.traced.tmesh, r.incidence, options.reorder_weight);
     glued = glued_incidence(*r.half_arc);
     for (const TwoGon& g : r.half_arc->inflated.two_gons) zips.push_back(two_gon_zip(g));
+    more_charts.resize(r.traced.tmesh.num_patches());
+    for (const TwoGon& g : r.half_arc->inflated.two_gons) {
+      std::vector<int> along;
+      for (const auto& side : {g.left, g.right})
+        for (int h : side)
+          for (int half : {h, TMesh::opposite(h)})
+            if (glued.half_arc_patch[half] >= 0) along.push_back(glued.half_arc_patch[half]);
+      for (int p : along) more_charts[p].insert(more_charts[p].end(), along.begin(), along.end());
+    }
   }
   TMesh& tm = r.half_arc ? r.half_arc->inflated.tmesh : r.traced.tmesh;
   const TMeshIncidence& cut_incidence = r.half_arc ? r.half_arc->incidence : r.incidence;
@@ -160,7 +170,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     if (!on_mesh) break;
     const SmoothedQuads left =
         smooth_requantized(*mesh, tm, incidence, r.traced.feature_edges, r.traced.feature_corners,
-                           r.collapsed, options.smoothing);
+                           r.collapsed, options.smoothing, more_charts);
     r.time_smoothing_s += t.lap();
     const int bad = left.inverted + left.degenerate;
     if (smoothed && bad >= smoothed_bad) {

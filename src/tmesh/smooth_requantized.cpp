@@ -195,7 +195,8 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
                                  const TMeshIncidence& incidence,
                                  const std::vector<std::array<int, 2>>& feature_edges,
                                  const std::vector<int>& feature_corners, CollapsedMesh& result,
-                                 const quant::SmoothingOptions& options) {
+                                 const quant::SmoothingOptions& options,
+                                 const std::vector<std::vector<int>>& more_charts) {
   if ((options.iterations <= 0 && options.quality_rounds <= 0) || !has_geometry(tmesh)) return {};
   const quant::Layout layout =
       requantization_layout(input, tmesh, incidence, feature_edges, feature_corners);
@@ -265,6 +266,14 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
     else
       origin.chart = o.patches.front();
     vertex_charts[v] = o.patches;
+    if (!more_charts.empty()) {
+      for (int p : o.patches)
+        vertex_charts[v].insert(vertex_charts[v].end(), more_charts[p].begin(),
+                                more_charts[p].end());
+      std::sort(vertex_charts[v].begin(), vertex_charts[v].end());
+      vertex_charts[v].erase(std::unique(vertex_charts[v].begin(), vertex_charts[v].end()),
+                             vertex_charts[v].end());
+    }
   }
   const std::vector<int> moving = movable_vertices(t.mesh);
   SmoothedQuads outcome;

@@ -51,10 +51,15 @@ struct SmoothedQuads {
 // Does nothing with 0 iterations or without patch grids, arc chains and mesh vertices.
 //
 // Returns what smoothing left (SmoothedQuads).
+//
+// `more_charts` (optional, per patch): patches whose charts the vertices of that patch may move
+// on too — for half-arc quantization, every patch along a two-gon, since a T-junction moved
+// along the path takes its patches' quads over the input region of their neighbours.
 SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
                                  const TMeshIncidence& incidence,
                                  const std::vector<std::array<int, 2>>& feature_edges,
                                  const std::vector<int>& feature_corners, CollapsedMesh& result,
-                                 const quant::SmoothingOptions& options);
+                                 const quant::SmoothingOptions& options,
+                                 const std::vector<std::vector<int>>& more_charts = {});
 
 }  // namespace bimdf::tmesh
