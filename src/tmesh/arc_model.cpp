@@ -97,7 +97,8 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
   // leaving to the second.
   std::vector<End> border_end(tmesh.num_half_arcs(), End{-1, true});
   const bool ladder = options.two_gon_reorder_weight >= 0;
-  for (const auto& sides : options.two_gons) {
+  for (size_t t = 0; t < options.two_gons.size(); ++t) {
+    const auto& sides = options.two_gons[t];
     const size_t n = sides[0].size();
     if (ladder && sides[1].size() != n)
       throw std::invalid_argument("a bounded two-gon needs as many half-arcs on either side");
@@ -117,10 +118,15 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
           pb.add_edge({nodes[0], false}, End{nodes[1], false}, 1, kInfinity, Cost::zero()));
       continue;
     }
-    for (size_t i = 0; i + 1 < n; ++i)
+    for (size_t i = 0; i + 1 < n; ++i) {
+      // The offset between nodes i and i + 1 is that at the path's vertex i + 1.
+      if (t < options.two_gon_pinned.size() && i + 1 < options.two_gon_pinned[t].size() &&
+          options.two_gon_pinned[t][i + 1])
+        continue;
       for (const auto& [from, to] : {std::pair{nodes[i], nodes[i + 1]}, {nodes[i + 1], nodes[i]}})
         pb.add_edge({from, false}, End{to, true}, 0, kInfinity,
                     Cost::linear(options.two_gon_reorder_weight));
+    }
   }
   model.arc_edge.resize(tmesh.num_arcs());
   for (int a = 0; a < tmesh.num_arcs(); ++a) {

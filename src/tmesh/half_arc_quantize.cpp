@@ -112,6 +112,7 @@ TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOpt
     if (setup.inflated.twin[a] >= 0) model.arc_weight[a] = 0.5;
   for (const TwoGon& g : setup.inflated.two_gons) model.two_gons.push_back(two_gon_zip(g));
   model.two_gon_reorder_weight = setup.reorder_weight;
+  for (const TwoGon& g : setup.inflated.two_gons) model.two_gon_pinned.push_back(g.crossing);
   q.time_model_s = t.lap();
   detail::run_quantization(cut, setup.incidence, q.constraints, model, options, q);
   if (q.arc_length.empty()) return q;

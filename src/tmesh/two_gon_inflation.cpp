@@ -176,6 +176,7 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
   // they belong to, so that right copies made below find their ends already moved.
   const PatchBoundary boundary(tmesh, incidence);
   std::vector<int> right_copy(tmesh.num_vertices(), -1);
+  std::vector<std::vector<char>> crossing(tmesh.nonzero_paths.size());
   for (int m : paths) {
     const std::vector<int>& path = tmesh.nonzero_paths[m];
     for (size_t i = 1; i < path.size(); ++i) {
@@ -185,14 +186,18 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
       if (has_mesh_vertices) o.vertex_mesh_vertex.push_back(tmesh.vertex_mesh_vertex[c]);
       out.vertex_origin.push_back(c);
       right_copy[c] = copy;
-      for (int g : right_fan(tmesh, boundary, path[i - 1], path[i]).outgoing)
-        o.arc_ends[TMesh::arc_of(g)][g & 1] = copy;
+      const Fan right = right_fan(tmesh, boundary, path[i - 1], path[i]);
+      for (int g : right.outgoing) o.arc_ends[TMesh::arc_of(g)][g & 1] = copy;
+      crossing[m].resize(path.size() + 1, 0);
+      crossing[m][i] = !right.outgoing.empty() &&
+                       !left_fan(tmesh, boundary, path[i - 1], path[i]).outgoing.empty();
     }
   }
   for (int m : paths) {
     const std::vector<int>& path = tmesh.nonzero_paths[m];
     TwoGon two_gon;
     two_gon.path = m;
+    two_gon.crossing = std::move(crossing[m]);
     for (size_t i = 0; i < path.size(); ++i) {
       const int h = path[i], a = TMesh::arc_of(h), copy = o.num_arcs();
       const int from = i == 0 ? o.half_arc_tail(h) : right_copy[tmesh.half_arc_tail(h)];

@@ -118,8 +118,10 @@ TEST(HalfArc, OptimumEqualsTheMilpOracleAndNeverLosesToGreedy) {
     ASSERT_EQ(h.quantization.status, SolveStatus::Optimal) << "trial " << trial;
     ASSERT_EQ(check_half_arc_quantization(t, h.relaxed, h.half_arc_length), "")
         << "trial " << trial;
+    std::vector<std::vector<char>> pinned;
+    for (const TwoGon& g : h.inflated.two_gons) pinned.push_back(g.crossing);
     const double oracle = milp_optimum(t, o.cost, o.side_weight, &h.quantization.constraints, 12,
-                                       -1, &h.relaxed, reorder);
+                                       -1, &h.relaxed, reorder, &pinned);
     ASSERT_TRUE(testing::relatively_close(h.quantization.objective, oracle))
         << "trial " << trial << ": " << h.quantization.objective << " vs CBC " << oracle;
     const TMeshQuantization greedy = quantize_tmesh(t, inc, o);
@@ -288,6 +290,12 @@ TEST(HalfArc, JunctionsTradePlacesAcrossAPathWhereArcsCannot) {
   EXPECT_EQ(collapse_and_tessellate(d.tmesh, validate_tmesh(d.tmesh), d.arc_length, nullptr)
                 .mesh.num_quads(),
             3);
+  // (2, 1) is a crossing: bounded two-gons keep it in place even when drifting is free, and
+  // the line between the rows stays straight — the greedy optimum again.
+  const HalfArcQuantization bounded = quantize_half_arcs(t, inc, {}, 0.0);
+  EXPECT_EQ(bounded.inflated.two_gons[0].crossing, (std::vector<char>{0, 1, 0}));
+  EXPECT_NEAR(bounded.quantization.objective, greedy.objective, 1e-9);
+  EXPECT_EQ(bounded.half_arc_length[2 * 13], bounded.half_arc_length[2 * 13 + 1]);
 }
 
 TEST(HalfArc, CheckNamesTheBrokenCondition) {

@@ -102,12 +102,14 @@ inline GridTMesh random_grid_tmesh(std::mt19937& rng, int columns, int rows, int
 // `constraints` says. A bound on a cut arc applies to the half-arc its path runs along (the
 // left copy, as in the inflated T-mesh). With reorder_weight ≥ 0 (bounded two-gons), instead
 // of the path's ≥ 1 row: per interior vertex i of the path, the offset Σ_{j ≤ i} (x_h_j −
-// x_opposite(h_j)) = d⁺ − d⁻ with d± ≥ 0 costing reorder_weight each.
+// x_opposite(h_j)) = d⁺ − d⁻ with d± ≥ 0 costing reorder_weight each — or 0 where `pinned`
+// (per path of half_arc_paths, per vertex 0..n) says so.
 inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weight,
                            const MinOneConstraints* constraints, int cap,
                            double relaxed_weight = -1,
                            const std::vector<int>* half_arc_paths = nullptr,
-                           double reorder_weight = -1) {
+                           double reorder_weight = -1,
+                           const std::vector<std::vector<char>>* pinned = nullptr) {
   const bool relaxed = relaxed_weight >= 0;
   // Length columns: one per arc, then one more per cut arc (its odd half-arc's).
   std::vector<int> column(t.num_half_arcs());
@@ -203,7 +205,8 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
   int offsets = 0;  // offset columns d⁺, d⁻ follow all others
   const int first_offset = Cbc_getNumCols(m);
   if (half_arc_paths)
-    for (int path : *half_arc_paths) {
+    for (size_t r = 0; r < half_arc_paths->size(); ++r) {
+      const int path = (*half_arc_paths)[r];
       std::vector<std::pair<int, double>> both, one;
       const std::vector<int>& half_arcs = t.nonzero_paths[path];
       for (size_t i = 0; i < half_arcs.size(); ++i) {
@@ -211,6 +214,10 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
         both.push_back({column[h], 1}), both.push_back({column[TMesh::opposite(h)], -1});
         one.push_back({column[h], 1});
         if (reorder_weight < 0 || i + 1 == half_arcs.size()) continue;
+        if (pinned && (*pinned)[r].size() > i + 1 && (*pinned)[r][i + 1]) {
+          add_sum(both, 'E', 0);  // no drift at a pinned vertex
+          continue;
+        }
         for (int sign : {1, -1}) {
           Cbc_addCol(m, "", 0, 1e30, reorder_weight, 1, 0, nullptr, nullptr);
           both.push_back({first_offset + offsets++, -sign});

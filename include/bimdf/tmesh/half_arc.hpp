@@ -58,6 +58,10 @@ namespace bimdf::tmesh {
 struct TwoGon {
   int path = -1;  // index into the input's nonzero_paths
   std::vector<int> left, right;
+  // Per vertex of the path (0..n, the ends included as 0): 1 where arcs leave it on both sides
+  // — a crossing, which a bounded two-gon keeps in place (splitting it into two T-junctions
+  // would break a straight line of the layout in two).
+  std::vector<char> crossing;
 };
 
 // The two-gon's zip for collapse_and_tessellate (collapse.hpp): its two sides of border

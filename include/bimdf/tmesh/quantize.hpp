@@ -107,6 +107,9 @@ struct ArcModelOptions {
   // drifted apart, either way) at cost w·|d|; no min-one. Not with `relaxed`.
   std::vector<std::array<std::vector<int>, 2>> two_gons;
   double two_gon_reorder_weight = -1;
+  // Bounded only (optional, per two-gon and position 0..n along its path): 1 where the offset
+  // must stay 0.
+  std::vector<std::vector<char>> two_gon_pinned;
 };
 
 struct ArcModel {
