@@ -110,6 +110,10 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
       ->default_val(1.0)
       ->check(CLI::NonNegativeNumber)
       ->needs(half_arc);
+  cmd->add_flag("--keep-crossings", o.keep_crossings,
+                "With --half-arc bounded: no drift where a path crosses another line (only "
+                "T-junctions trade places; straight lines of the layout stay straight)")
+      ->needs(half_arc);
   cmd->add_option("--max-angle", o.max_angle,
                   "Trace the angle-bounded extended motorcycle graph (Lyon et al. 2021): "
                   "separatrices may deviate from the input's grid lines by at most this many "
@@ -171,6 +175,9 @@ int run_requantize(const RequantizeCommandOptions& o) {
   ro.quantize.relaxed = o.relaxed;
   ro.half_arc = o.half_arc != "off";
   ro.reorder_weight = o.half_arc == "bounded" ? o.reorder_weight : -1;
+  ro.keep_crossings = o.keep_crossings;
+  if ((o.keep_crossings || o.reorder_weight != 1) && o.half_arc != "bounded")
+    throw UsageError{"--reorder-weight and --keep-crossings need --half-arc bounded"};
   ro.quantize.relaxed_weight = o.relaxed_weight;
   ro.quantize.threads = o.threads;
   ro.smoothing = o.smoothing;

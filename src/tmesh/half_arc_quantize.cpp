@@ -73,13 +73,14 @@ MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& inci
 }
 
 HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
-                               double reorder_weight) {
+                               double reorder_weight, bool keep_crossings) {
   HalfArcSetup setup;
   setup.relaxed = relaxable_paths(tmesh, incidence);
   setup.inflated = inflate_two_gons(tmesh, incidence, setup.relaxed);
   setup.incidence = validate_tmesh(setup.inflated.tmesh, "<inflated t-mesh>");
   setup.bounds = half_arc_bounds(tmesh, incidence, setup.relaxed, reorder_weight >= 0);
   setup.reorder_weight = reorder_weight;
+  setup.keep_crossings = keep_crossings;
   return setup;
 }
 
@@ -112,7 +113,8 @@ TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOpt
     if (setup.inflated.twin[a] >= 0) model.arc_weight[a] = 0.5;
   for (const TwoGon& g : setup.inflated.two_gons) model.two_gons.push_back(two_gon_zip(g));
   model.two_gon_reorder_weight = setup.reorder_weight;
-  for (const TwoGon& g : setup.inflated.two_gons) model.two_gon_pinned.push_back(g.crossing);
+  if (setup.keep_crossings)
+    for (const TwoGon& g : setup.inflated.two_gons) model.two_gon_pinned.push_back(g.crossing);
   q.time_model_s = t.lap();
   detail::run_quantization(cut, setup.incidence, q.constraints, model, options, q);
   if (q.arc_length.empty()) return q;
@@ -123,9 +125,11 @@ TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOpt
 }
 
 HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                       const QuantizeOptions& options, double reorder_weight) {
+                                       const QuantizeOptions& options, double reorder_weight,
+                                       bool keep_crossings) {
   HalfArcQuantization r;
-  static_cast<HalfArcSetup&>(r) = prepare_half_arcs(tmesh, incidence, reorder_weight);
+  static_cast<HalfArcSetup&>(r) =
+      prepare_half_arcs(tmesh, incidence, reorder_weight, keep_crossings);
   r.quantization = quantize_inflated(r, options);
   if (r.quantization.arc_length.empty()) return r;
   r.half_arc_length = half_arc_lengths(tmesh, r.inflated, r.quantization.arc_length);

@@ -100,7 +100,8 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   if (options.half_arc) {
     if (options.quantize.relaxed)
       throw std::invalid_argument("half-arc quantization does not combine with relaxed patches");
-    r.half_arc = prepare_half_arcs(r.traced.tmesh, r.incidence, options.reorder_weight);
+    r.half_arc = prepare_half_arcs(r.traced.tmesh, r.incidence, options.reorder_weight,
+                                   options.keep_crossings);
     glued = glued_incidence(*r.half_arc);
     for (const TwoGon& g : r.half_arc->inflated.two_gons) zips.push_back(two_gon_zip(g));
     more_charts.resize(r.traced.tmesh.num_patches());

@@ -214,7 +214,7 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
         both.push_back({column[h], 1}), both.push_back({column[TMesh::opposite(h)], -1});
         one.push_back({column[h], 1});
         if (reorder_weight < 0 || i + 1 == half_arcs.size()) continue;
-        if (pinned && (*pinned)[r].size() > i + 1 && (*pinned)[r][i + 1]) {
+        if (pinned && r < pinned->size() && (*pinned)[r].size() > i + 1 && (*pinned)[r][i + 1]) {
           add_sum(both, 'E', 0);  // no drift at a pinned vertex
           continue;
         }

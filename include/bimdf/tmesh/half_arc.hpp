@@ -59,8 +59,7 @@ struct TwoGon {
   int path = -1;  // index into the input's nonzero_paths
   std::vector<int> left, right;
   // Per vertex of the path (0..n, the ends included as 0): 1 where arcs leave it on both sides
-  // — a crossing, which a bounded two-gon keeps in place (splitting it into two T-junctions
-  // would break a straight line of the layout in two).
+  // — a crossing, which a bounded two-gon can keep in place (HalfArcSetup::keep_crossings).
   std::vector<char> crossing;
 };
 
@@ -123,16 +122,21 @@ std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<in
 // `reorder_weight` < 0: exact two-gons (Fig. 12a). ≥ 0: bounded ones (Fig. 12b): every unit by
 // which the two sides of a path drift apart at one of its vertices costs this much (0: free,
 // large: an arc quantization), and every path keeps Algorithm 2's bounds instead of its
-// two-gon's min-one — T-junctions trade places only where that pays for itself.
+// two-gon's min-one — T-junctions trade places only where that pays for itself. With
+// keep_crossings, a bounded two-gon does not drift at a crossing (a path vertex with arcs on
+// both sides): splitting one into two T-junctions breaks a straight line of the layout in two.
+// Measured (docs/benchmarks.md), that keeps every coarse base complex near greedy's, where
+// drifting crossings shrink most of them by 16–25%.
 struct HalfArcSetup {
   std::vector<int> relaxed;  // the input's paths made two-gons (relaxable_paths)
   InflatedTMesh inflated;
   TMeshIncidence incidence;  // of inflated.tmesh
   MinOneConstraints bounds;
   double reorder_weight = -1;
+  bool keep_crossings = false;
 };
 HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
-                               double reorder_weight = -1);
+                               double reorder_weight = -1, bool keep_crossings = false);
 
 // T''s incidence with every half-arc facing a two-gon counted on the patch across it (the side
 // its twin's other half-arc lies on): what the separation repairs and smoothing must see, for
@@ -157,7 +161,8 @@ struct HalfArcQuantization : HalfArcSetup {
 // prepare_half_arcs, then quantize_inflated, then check_half_arc_quantization on the input
 // (std::logic_error if it fails).
 HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                       const QuantizeOptions& options, double reorder_weight = -1);
+                                       const QuantizeOptions& options, double reorder_weight = -1,
+                                       bool keep_crossings = false);
 
 // The deflated T-mesh (see above) and its arc quantization: vertices and arcs of the input's
 // positions where a position is shared (no chains or grids), the same patches, every

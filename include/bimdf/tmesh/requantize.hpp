@@ -54,6 +54,7 @@ struct RequantizeOptions {
   // With half_arc: < 0 exact two-gons; ≥ 0 bounded ones, each unit of drift between a path's
   // two sides at one of its vertices costing this much (HalfArcSetup::reorder_weight).
   double reorder_weight = -1;
+  bool keep_crossings = false;  // HalfArcSetup::keep_crossings (bounded only)
 };
 
 struct RequantizeResult {
