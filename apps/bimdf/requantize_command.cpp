@@ -110,6 +110,11 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
       ->default_val(1.0)
       ->check(CLI::NonNegativeNumber)
       ->needs(half_arc);
+  cmd->add_flag("--compare-greedy", o.compare_greedy,
+                "With --half-arc: also solve the same T-mesh at the same targets with "
+                "Algorithm 2's bounds, and report both objectives before any repair "
+                "(compare_greedy: greedy, half_arc)")
+      ->needs(half_arc);
   cmd->add_flag("--keep-crossings", o.keep_crossings,
                 "With --half-arc bounded: no drift where a path crosses another line (only "
                 "T-junctions trade places; straight lines of the layout stay straight)")
@@ -251,6 +256,25 @@ int run_requantize(const RequantizeCommandOptions& o) {
   j["repair_constraints"] = r.repair_constraints.size();
   j["zero_arcs"] = q.zero_arcs;
   j["half_arc"] = o.half_arc;
+  if (o.compare_greedy && r.half_arc) {
+    // The same problem both ways, before repairs (whose bounds differ between the models).
+    tmesh::QuantizeOptions plain = ro.quantize;
+    const tmesh::TMeshQuantization greedy = tmesh::quantize_tmesh(tm, r.incidence, plain);
+    const tmesh::HalfArcQuantization half =
+        tmesh::quantize_half_arcs(tm, r.incidence, plain, ro.reorder_weight, ro.keep_crossings);
+    const bool coarse = ro.quantize.coarse;
+    const double g = coarse ? greedy.coarse_objective : greedy.objective;
+    const double h = coarse ? half.quantization.coarse_objective : half.quantization.objective;
+    j["compare_greedy"] = {
+        {"greedy", g}, {"half_arc", h}, {"stage", coarse ? "coarse" : "deviation"}};
+    s << "compare       " << (coarse ? "coarse objective" : "objective")
+      << " before repairs: greedy " << g << ", half-arc " << h << "\n";
+  }
+  if (!r.half_arc_fallback.empty()) {
+    j["half_arc_fallback"] = r.half_arc_fallback;
+    std::cerr << "note: the half-arc quantization did not collapse into a quad mesh ("
+              << r.half_arc_fallback << "); the arc quantization was used instead\n";
+  }
   if (r.half_arc) {
     j["half_arc_paths"] = r.half_arc->relaxed.size();
     j["reordered_junctions"] = r.reordered_junctions;

@@ -27,6 +27,7 @@ struct RequantizeCommandOptions {
   std::string half_arc = "off";  // --half-arc exact|bounded|off
   double reorder_weight = 1;     // --reorder-weight, with --half-arc bounded
   bool keep_crossings = false;   // --keep-crossings, with --half-arc bounded
+  bool compare_greedy = false;   // --compare-greedy
   double max_angle = -1;  // < 0: not given (--coarse then uses tmesh::kDefaultCoarseMaxAngle)
   int threads = 1;
   bool relaxed = false;       // --relaxed: irregular quad patches allowed at a cost

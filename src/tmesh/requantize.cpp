@@ -155,8 +155,23 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       ++r.repair_rounds;
       continue;
     }
-    r.collapsed = collapse_and_tessellate(tm, cut_incidence, r.quantization.arc_length,
-                                          on_mesh ? mesh : nullptr, options.quantize.relaxed, zips);
+    try {
+      r.collapsed =
+          collapse_and_tessellate(tm, cut_incidence, r.quantization.arc_length,
+                                  on_mesh ? mesh : nullptr, options.quantize.relaxed, zips);
+    } catch (const CollapseError& e) {
+      if (!r.half_arc) throw;
+      // The separation repairs act on a collapse that succeeded; a half-arc quantization that
+      // zips two T-mesh vertices into an interior vertex of two quads (say) has none. Arcs
+      // only, then, as the result says.
+      RequantizeOptions arcs_only = options;
+      arcs_only.half_arc = false;
+      RequantizeResult fallback = requantize_tmesh(std::move(r.traced), mesh, arcs_only, source);
+      fallback.half_arc_fallback = e.what();
+      fallback.time_quantize_s += r.time_quantize_s;
+      fallback.time_collapse_s += r.time_collapse_s + t.lap();
+      return fallback;
+    }
     r.time_collapse_s += t.lap();
     // Both checks run, so that one round bounds every fault found.
     const bool merged = add_separation_bounds(tm, incidence, r.quantization.arc_length, r.collapsed,

@@ -82,6 +82,9 @@ struct RequantizeResult {
   std::optional<HalfArcSetup> half_arc;
   int adapted_arcs = 0;
   int reordered_junctions = 0;
+  // Not empty when the half-arc quantization did not collapse into a mesh (the collapse's
+  // message): the result is then the arc quantization's (half_arc empty), as without half_arc.
+  std::string half_arc_fallback;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
 
@@ -123,7 +126,8 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 // T-mesh is quantized again — the lazy constraints the paper (§4.2.3) mentions as unexplored. Each
 // round bounds an element that was 0, so this ends; all elements bounded means nothing collapses.
 // `options.trace` is not used. Throws CollapseError if the quantized T-mesh does not collapse into
-// a conforming mesh (see collapse.hpp).
+// a conforming mesh (see collapse.hpp) — with half_arc, only if the arc quantization it then
+// falls back to does not either (RequantizeResult::half_arc_fallback).
 RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                   const RequantizeOptions& options, const std::string& source);
 
