@@ -200,16 +200,30 @@ std::vector<std::vector<int64_t>> side_signature(const DeflatedTMesh& d) {
   return out;
 }
 
-// Random grid T-meshes with short targets: the deflated T-mesh validates, carries a valid arc
+// The grid of JunctionsTradePlacesAcrossAPathWhereArcsCannot (below): its optimum moves one
+// T-junction across a path.
+TMesh traded_junction_grid() {
+  GridTMesh g = three_by_two();
+  TMesh& t = g.tmesh;
+  for (int a = 0; a < 9; ++a) t.arc_target[a] = 1;
+  for (int i = 0; i <= 3; ++i) t.arc_target[9 + 2 * i] = 0.6, t.arc_target[10 + 2 * i] = 0.2;
+  t.nonzero_paths = {{2 * 10}, {2 * 13, 2 * 14}};
+  return t;
+}
+
+// Random grid T-meshes with short targets, and first the grid whose optimum moves a T-junction
+// across a path: the deflated T-mesh validates, carries a valid arc
 // quantization, collapses into the same quad mesh as T' closed by its zips, and does not
 // depend on the order of the paths (10 shuffles, the same half-arc lengths).
 TEST(HalfArc, DeflationIsAValidArcQuantizationInAnyPathOrder) {
   std::mt19937 rng(23);
   int reordered = 0, deflated = 0;
-  for (int trial = 0; trial < testing::scaled(150); ++trial) {
-    GridTMesh g = random_grid_tmesh(rng, 2 + trial % 4, 2 + (trial / 4) % 3, 2 + trial % 6);
+  for (int trial = -1; trial < testing::scaled(150); ++trial) {
+    GridTMesh g{traded_junction_grid(), 3, 2};
+    if (trial >= 0) g = random_grid_tmesh(rng, 2 + trial % 4, 2 + (trial / 4) % 3, 2 + trial % 6);
     TMesh& t = g.tmesh;
-    for (double& x : t.arc_target) x *= trial % 2 ? 0.3 : 1.0;
+    if (trial >= 0)
+      for (double& x : t.arc_target) x *= trial % 2 ? 0.3 : 1.0;
     const TMeshIncidence inc = validate_tmesh(t);
     const HalfArcQuantization h = quantize_half_arcs(t, inc, {});
     ASSERT_EQ(h.quantization.status, SolveStatus::Optimal);
@@ -253,7 +267,7 @@ TEST(HalfArc, DeflationIsAValidArcQuantizationInAnyPathOrder) {
   }
   std::printf("%d deflated, %d junctions reordered\n", deflated, reordered);
   EXPECT_GT(deflated, testing::scaled(150) / 4);
-  EXPECT_GT(reordered, 0);
+  EXPECT_GT(reordered, 0);  // the first grid's, at least
 }
 
 // In the spirit of the paper's Fig. 11: a 3 × 2 grid whose upper row is thin (0.2 against
@@ -263,11 +277,7 @@ TEST(HalfArc, DeflationIsAValidArcQuantizationInAnyPathOrder) {
 // line between the rows meet x = 2 at different heights on its two sides: west of it the lower
 // row collapses, east of it the upper one, three quads — every path still non-zero.
 TEST(HalfArc, JunctionsTradePlacesAcrossAPathWhereArcsCannot) {
-  GridTMesh g = three_by_two();
-  TMesh& t = g.tmesh;
-  for (int a = 0; a < 9; ++a) t.arc_target[a] = 1;
-  for (int i = 0; i <= 3; ++i) t.arc_target[9 + 2 * i] = 0.6, t.arc_target[10 + 2 * i] = 0.2;
-  t.nonzero_paths = {{2 * 10}, {2 * 13, 2 * 14}};
+  const TMesh t = traded_junction_grid();
   const TMeshIncidence inc = validate_tmesh(t);
   const TMeshQuantization greedy = quantize_tmesh(t, inc, {});
   EXPECT_EQ(greedy.zero_arcs, 0);
