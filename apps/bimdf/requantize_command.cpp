@@ -260,11 +260,11 @@ int run_requantize(const RequantizeCommandOptions& o) {
     // The same problem both ways, before repairs (whose bounds differ between the models).
     tmesh::QuantizeOptions plain = ro.quantize;
     const tmesh::TMeshQuantization greedy = tmesh::quantize_tmesh(tm, r.incidence, plain);
-    const tmesh::HalfArcQuantization half =
-        tmesh::quantize_half_arcs(tm, r.incidence, plain, ro.reorder_weight, ro.keep_crossings);
+    // The cut T-mesh the run made, at the same targets (its arcs' are the input's).
+    const tmesh::TMeshQuantization half = tmesh::quantize_inflated(*r.half_arc, plain);
     const bool coarse = ro.quantize.coarse;
     const double g = coarse ? greedy.coarse_objective : greedy.objective;
-    const double h = coarse ? half.quantization.coarse_objective : half.quantization.objective;
+    const double h = coarse ? half.coarse_objective : half.objective;
     j["compare_greedy"] = {
         {"greedy", g}, {"half_arc", h}, {"stage", coarse ? "coarse" : "deviation"}};
     s << "compare       " << (coarse ? "coarse objective" : "objective")

@@ -416,6 +416,12 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
   const int np = tmesh.num_patches();
   CollapsedMesh result;
   UnionFind classes(c.num_points);
+  // Two chains of points facing each other (a zero-width patch's long sides, a two-gon's
+  // sides), both walked with their own face on the left: identified position by position, the
+  // first from its start with the second from its end.
+  const auto close_between = [&](const std::vector<int>& a, const std::vector<int>& b) {
+    for (size_t s = 0; s < a.size(); ++s) classes.unite(a[s], b[b.size() - 1 - s]);
+  };
   for (int a = 0; a < tmesh.num_arcs(); ++a) {
     result.zero_arcs += arc_length[a] == 0;
     if (arc_length[a] == 0) classes.unite(tmesh.arc_ends[a][0], tmesh.arc_ends[a][1]);
@@ -434,9 +440,7 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
       // Side k (walked forward) meets side k+2 walked backwards, position by position.
       ++result.collapsed_patches;
       for (int k : {0, 1})
-        if (c.size[p][1 - k] == 0)
-          for (size_t s = 0; s < side[k].size(); ++s)
-            classes.unite(side[k][s], side[k + 2][side[k + 2].size() - 1 - s]);
+        if (c.size[p][1 - k] == 0) close_between(side[k], side[k + 2]);
       if (W == 0 && H == 0)
         for (int k = 1; k < 4; ++k) classes.unite(side[0][0], side[k][0]);
       continue;
@@ -466,8 +470,7 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
       throw std::invalid_argument("zip " + std::to_string(z) + ": its sides have lengths " +
                                   std::to_string(int64_t(points[0].size()) - 1) + " and " +
                                   std::to_string(int64_t(points[1].size()) - 1));
-    for (size_t i = 0; i < points[0].size(); ++i)
-      classes.unite(points[0][i], points[1][points[1].size() - 1 - i]);
+    close_between(points[0], points[1]);
   }
   if (np > 0 && result.collapsed_patches == np)
     throw CollapseError("every patch would collapse (width or height 0): no quad is left");

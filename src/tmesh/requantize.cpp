@@ -106,11 +106,12 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     for (const TwoGon& g : r.half_arc->inflated.two_gons) zips.push_back(two_gon_zip(g));
     more_charts.resize(r.traced.tmesh.num_patches());
     for (const TwoGon& g : r.half_arc->inflated.two_gons) {
+      // A left copy's half-arcs lie on the patches left of the path and (glued) right of it.
       std::vector<int> along;
-      for (const auto& side : {g.left, g.right})
-        for (int h : side)
-          for (int half : {h, TMesh::opposite(h)})
-            if (glued.half_arc_patch[half] >= 0) along.push_back(glued.half_arc_patch[half]);
+      for (int h : g.left)
+        for (int half : {h, TMesh::opposite(h)}) along.push_back(glued.half_arc_patch[half]);
+      std::sort(along.begin(), along.end());
+      along.erase(std::unique(along.begin(), along.end()), along.end());
       for (int p : along) more_charts[p].insert(more_charts[p].end(), along.begin(), along.end());
     }
   }
