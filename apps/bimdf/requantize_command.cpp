@@ -279,8 +279,10 @@ int run_requantize(const RequantizeCommandOptions& o) {
     j["half_arc_paths"] = r.half_arc->relaxed.size();
     j["reordered_junctions"] = r.reordered_junctions;
     j["adapted_arcs"] = r.adapted_arcs;
+    j["aligned_two_gons"] = r.aligned_two_gons;
     s << "half-arc      " << r.half_arc->relaxed.size() << " of " << tm.nonzero_paths.size()
-      << " non-zero paths quantized on both sides; " << r.reordered_junctions
+      << " non-zero paths quantized on both sides (" << r.aligned_two_gons
+      << " held to arcs by repairs); " << r.reordered_junctions
       << " T-junctions moved across a path, " << r.adapted_arcs << " arcs after adaptation\n";
   }
   if (o.coarse) j["coarse_objective"] = q.coarse_objective;

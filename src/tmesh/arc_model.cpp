@@ -96,10 +96,14 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
   // joins; bounded, at the ladder's node of their position, entering from the first side and
   // leaving to the second.
   std::vector<End> border_end(tmesh.num_half_arcs(), End{-1, true});
-  const bool ladder = options.two_gon_reorder_weight >= 0;
+  if (!options.two_gon_aligned.empty() && options.two_gon_aligned.size() != options.two_gons.size())
+    throw std::invalid_argument("two_gon_aligned needs one entry per two-gon");
   for (size_t t = 0; t < options.two_gons.size(); ++t) {
     const auto& sides = options.two_gons[t];
     const size_t n = sides[0].size();
+    // An aligned two-gon is a ladder without rungs: every position passes its half-arc across.
+    const bool aligned = !options.two_gon_aligned.empty() && options.two_gon_aligned[t];
+    const bool ladder = options.two_gon_reorder_weight >= 0 || aligned;
     if (ladder && sides[1].size() != n)
       throw std::invalid_argument("a bounded two-gon needs as many half-arcs on either side");
     std::vector<int> nodes;
@@ -118,7 +122,8 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
           pb.add_edge({nodes[0], false}, End{nodes[1], false}, 1, kInfinity, Cost::zero()));
       continue;
     }
-    for (size_t i = 0; i + 1 < n; ++i) {
+    if (options.two_gon_reorder_weight < 0) model.two_gon_edge.push_back(-1);
+    for (size_t i = 0; !aligned && i + 1 < n; ++i) {
       // The offset between nodes i and i + 1 is that at the path's vertex i + 1.
       if (t < options.two_gon_pinned.size() && i + 1 < options.two_gon_pinned[t].size() &&
           options.two_gon_pinned[t][i + 1])

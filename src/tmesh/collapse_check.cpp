@@ -46,11 +46,12 @@ void check_result(const CollapsedMesh& result, const std::vector<std::array<int,
       for (int b = a + 1; b < 4; ++b)
         if (out.quads[f][a] == out.quads[f][b])
           throw CollapseError("patch " + std::to_string(out.quad_patch[f]) + ": " +
-                              (quad_cell[f][1] < 0  // an irregular patch's pattern quad
-                                   ? "pattern quad " + std::to_string(quad_cell[f][0])
-                                   : "quad (" + std::to_string(quad_cell[f][0]) + ", " +
-                                         std::to_string(quad_cell[f][1]) + ")") +
-                              " would have two corners at " + describe(out.quads[f][a]));
+                                  (quad_cell[f][1] < 0  // an irregular patch's pattern quad
+                                       ? "pattern quad " + std::to_string(quad_cell[f][0])
+                                       : "quad (" + std::to_string(quad_cell[f][0]) + ", " +
+                                             std::to_string(quad_cell[f][1]) + ")") +
+                                  " would have two corners at " + describe(out.quads[f][a]),
+                              {out.quad_patch[f]});
   // Edges as (smaller vertex, larger vertex, quad, direction), grouped by sorting.
   std::vector<std::tuple<int, int, int, bool>> edges;
   edges.reserve(size_t(4) * nq);
@@ -71,14 +72,17 @@ void check_result(const CollapsedMesh& result, const std::vector<std::array<int,
     if (end - e > 2)
       throw CollapseError(
           std::to_string(end - e) + " quads (patches " + std::to_string(out.quad_patch[f]) + ", " +
-          std::to_string(out.quad_patch[std::get<2>(edges[e + 1])]) + ", " +
-          std::to_string(out.quad_patch[std::get<2>(edges[e + 2])]) + ") would share" + between);
+              std::to_string(out.quad_patch[std::get<2>(edges[e + 1])]) + ", " +
+              std::to_string(out.quad_patch[std::get<2>(edges[e + 2])]) + ") would share" + between,
+          {out.quad_patch[f], out.quad_patch[std::get<2>(edges[e + 1])],
+           out.quad_patch[std::get<2>(edges[e + 2])]});
     if (end - e == 2) {
       const int g = std::get<2>(edges[e + 1]);
       if (dir == std::get<3>(edges[e + 1]))
         throw CollapseError("patches " + std::to_string(out.quad_patch[f]) + " and " +
-                            std::to_string(out.quad_patch[g]) + " would both walk" + between +
-                            " in the same direction");
+                                std::to_string(out.quad_patch[g]) + " would both walk" + between +
+                                " in the same direction",
+                            {out.quad_patch[f], out.quad_patch[g]});
       ++closed_edges[u], ++closed_edges[v];
     }
     e = end;
@@ -98,11 +102,13 @@ void check_result(const CollapsedMesh& result, const std::vector<std::array<int,
     for (size_t a = 0; a < around.size(); ++a) count += fans.find(static_cast<int>(a)) == int(a);
     if (count > 1)
       throw CollapseError(describe(v) + " would be non-manifold: its quads form " +
-                          std::to_string(count) + " separate fans");
+                              std::to_string(count) + " separate fans",
+                          result.origin[v].patches);
     // Two quads around an interior vertex share two consecutive edges and fold onto each
     // other; an input mesh may have such a vertex, but collapse must not make one.
     if (around.size() == 2 && closed_edges[v] == 2 && class_size[v] > 1)
-      throw CollapseError(describe(v) + " would become an interior vertex of only two quads");
+      throw CollapseError(describe(v) + " would become an interior vertex of only two quads",
+                          result.origin[v].patches);
   }
 }
 

@@ -1,7 +1,7 @@
 // quantize_half_arcs and half_arc_bounds (tmesh/half_arc.hpp): the bounds the half-arc model
 // keeps, the arc model of the inflated T-mesh with its two-gons, and both checks.
 #include <algorithm>
-#include <set>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -35,13 +35,18 @@ std::string check_two_gons(const InflatedTMesh& inflated, const std::vector<int6
 }  // namespace
 
 MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                  const std::vector<int>& relaxed, bool bounded) {
+                                  const std::vector<int>& relaxed,
+                                  const std::vector<char>& bounded) {
+  if (!bounded.empty() && bounded.size() != relaxed.size())
+    throw std::invalid_argument("half_arc_bounds: one bounded flag per relaxed path");
   std::vector<int> cover;
   const MinOneConstraints greedy = greedy_min_one_constraints(tmesh, incidence, &cover);
-  std::set<std::vector<int>> relaxed_arcs;
+  // Per relaxed path's arcs: whether its two-gon needs Algorithm 2's bounds.
+  std::map<std::vector<int>, bool> relaxed_arcs;
   std::vector<char> cut(tmesh.num_arcs(), 0);
-  for (int m : relaxed) {
-    relaxed_arcs.insert(arcs_along(tmesh.nonzero_paths[m]));
+  for (size_t i = 0; i < relaxed.size(); ++i) {
+    const int m = relaxed[i];
+    relaxed_arcs[arcs_along(tmesh.nonzero_paths[m])] = !bounded.empty() && bounded[i];
     for (int h : tmesh.nonzero_paths[m]) cut[TMesh::arc_of(h)] = 1;
   }
   MinOneConstraints out;
@@ -51,9 +56,9 @@ MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& inci
     const std::vector<int> arcs = arcs_along(tmesh.nonzero_paths[m]);
     if (arcs.size() == 1)
       out.arcs.push_back(arcs.front());  // exact: the path is its arc
-    else if (!relaxed_arcs.count(arcs))
+    else if (const auto it = relaxed_arcs.find(arcs); it == relaxed_arcs.end())
       keep[cover[m]] |= 1;
-    else if (bounded)
+    else if (it->second)
       keep[cover[m]] |= 2;
   }
   for (size_t i = 0; i < greedy.sides.size(); ++i)
@@ -78,10 +83,29 @@ HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& inciden
   setup.relaxed = relaxable_paths(tmesh, incidence);
   setup.inflated = inflate_two_gons(tmesh, incidence, setup.relaxed);
   setup.incidence = validate_tmesh(setup.inflated.tmesh, "<inflated t-mesh>");
-  setup.bounds = half_arc_bounds(tmesh, incidence, setup.relaxed, reorder_weight >= 0);
+  setup.bounds = half_arc_bounds(tmesh, incidence, setup.relaxed,
+                                 std::vector<char>(setup.relaxed.size(), reorder_weight >= 0));
   setup.reorder_weight = reorder_weight;
   setup.keep_crossings = keep_crossings;
+  setup.aligned.assign(setup.inflated.two_gons.size(), 0);
   return setup;
+}
+
+int align_two_gons(HalfArcSetup& setup, const TMesh& tmesh, const TMeshIncidence& incidence,
+                   const std::vector<int>& two_gons) {
+  setup.aligned.resize(setup.inflated.two_gons.size(), 0);
+  int added = 0;
+  for (int g : two_gons) {
+    if (g < 0 || g >= static_cast<int>(setup.aligned.size()))
+      throw std::invalid_argument("align_two_gons: no two-gon " + std::to_string(g));
+    added += !setup.aligned[g];
+    setup.aligned[g] = 1;
+  }
+  // Two-gons follow relaxed paths in order (inflate_two_gons), so the flags line up.
+  std::vector<char> bounded = setup.aligned;
+  if (setup.reorder_weight >= 0) bounded.assign(bounded.size(), 1);
+  setup.bounds = half_arc_bounds(tmesh, incidence, setup.relaxed, bounded);
+  return added;
 }
 
 TMeshIncidence glued_incidence(const HalfArcSetup& setup) {
@@ -113,6 +137,7 @@ TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOpt
     if (setup.inflated.twin[a] >= 0) model.arc_weight[a] = 0.5;
   for (const TwoGon& g : setup.inflated.two_gons) model.two_gons.push_back(two_gon_zip(g));
   model.two_gon_reorder_weight = setup.reorder_weight;
+  model.two_gon_aligned = setup.aligned;
   if (setup.keep_crossings)
     for (const TwoGon& g : setup.inflated.two_gons) model.two_gon_pinned.push_back(g.crossing);
   q.time_model_s = t.lap();

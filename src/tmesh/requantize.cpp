@@ -97,6 +97,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   TMeshIncidence glued;
   std::vector<Zip> zips;
   std::vector<std::vector<int>> more_charts;
+  std::vector<std::vector<int>> two_gons_at;  // per patch: the two-gons along it
   if (options.half_arc) {
     if (options.quantize.relaxed)
       throw std::invalid_argument("half-arc quantization does not combine with relaxed patches");
@@ -105,19 +106,32 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     glued = glued_incidence(*r.half_arc);
     for (const TwoGon& g : r.half_arc->inflated.two_gons) zips.push_back(two_gon_zip(g));
     more_charts.resize(r.traced.tmesh.num_patches());
-    for (const TwoGon& g : r.half_arc->inflated.two_gons) {
+    two_gons_at.resize(r.traced.tmesh.num_patches());
+    for (size_t k = 0; k < r.half_arc->inflated.two_gons.size(); ++k) {
+      const TwoGon& g = r.half_arc->inflated.two_gons[k];
       // A left copy's half-arcs lie on the patches left of the path and (glued) right of it.
       std::vector<int> along;
       for (int h : g.left)
         for (int half : {h, TMesh::opposite(h)}) along.push_back(glued.half_arc_patch[half]);
       std::sort(along.begin(), along.end());
       along.erase(std::unique(along.begin(), along.end()), along.end());
-      for (int p : along) more_charts[p].insert(more_charts[p].end(), along.begin(), along.end());
+      for (int p : along) {
+        more_charts[p].insert(more_charts[p].end(), along.begin(), along.end());
+        two_gons_at[p].push_back(static_cast<int>(k));
+      }
     }
   }
   TMesh& tm = r.half_arc ? r.half_arc->inflated.tmesh : r.traced.tmesh;
   const TMeshIncidence& cut_incidence = r.half_arc ? r.half_arc->incidence : r.incidence;
   const TMeshIncidence& incidence = r.half_arc ? glued : r.incidence;
+  // Half-arc repair: aligns the two-gons along `patches` (those not aligned yet); true if any.
+  const auto align_along = [&](const std::vector<int>& patches) {
+    std::vector<int> two_gons;
+    for (int p : patches)
+      if (p >= 0 && p < static_cast<int>(two_gons_at.size()))
+        two_gons.insert(two_gons.end(), two_gons_at[p].begin(), two_gons_at[p].end());
+    return r.half_arc && align_two_gons(*r.half_arc, r.traced.tmesh, r.incidence, two_gons) > 0;
+  };
   const bool on_mesh = mesh && !tm.patch_grid.empty();
   QuantizeOptions quantize = options.quantize;
   const auto quantize_once = [&] {
@@ -132,7 +146,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   // conflict with arcs fixed to 0) or smooths no better (the split quad's halves can stay
   // inverted, or turn others over).
   std::optional<RequantizeResult> smoothed;
-  int smoothed_bad = 0, smoothed_rounds = 0;
+  int smoothed_bad = 0, smoothed_rounds = 0, aligned_rounds = 0;
   const auto restore_smoothed = [&] {
     const double quantize_s = r.time_quantize_s, collapse_s = r.time_collapse_s,
                  smoothing_s = r.time_smoothing_s;
@@ -162,6 +176,12 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                   on_mesh ? mesh : nullptr, options.quantize.relaxed, zips);
     } catch (const CollapseError& e) {
       if (!r.half_arc) throw;
+      // Drift the zips cannot close (two T-mesh vertices zipped into an interior vertex of two
+      // quads, say): hold the two-gons there to the arc quantization and solve again.
+      if (align_along(e.patches())) {
+        ++r.repair_rounds;
+        continue;
+      }
       // The separation repairs act on a collapse that succeeded; a half-arc quantization that
       // zips two T-mesh vertices into an interior vertex of two quads (say) has none. Arcs
       // only, then, as the result says.
@@ -194,6 +214,20 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       restore_smoothed();
       break;
     }
+    // Half-arc: quads smoothing did not right (inverted or degenerate) where the re-embedding
+    // could not follow the drift of a two-gon along them: align those two-gons and solve again.
+    if (r.half_arc && aligned_rounds < options.max_split_repairs) {
+      std::vector<int> patches;
+      for (const std::vector<int>* quads : {&left.to_split, &left.degenerate_quads})
+        for (int f : *quads) patches.push_back(r.collapsed.mesh.quad_patch[f]);
+      if (align_along(patches)) {
+        smoothed = r;
+        smoothed_bad = bad;
+        ++aligned_rounds;
+        ++r.repair_rounds;
+        continue;
+      }
+    }
     // Quads smoothing did not right: split them by bounding the quantization and smooth the
     // new one, a few times at most (each round smooths the whole mesh again); where no split
     // reaches them, uniform coarse lengths get fitted ones instead.
@@ -215,6 +249,8 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   if (r.half_arc && !r.quantization.arc_length.empty()) {
     const DeflatedTMesh d = deflate_two_gons(r.half_arc->inflated, r.quantization.arc_length);
     r.adapted_arcs = d.tmesh.num_arcs();
+    r.aligned_two_gons =
+        static_cast<int>(std::count(r.half_arc->aligned.begin(), r.half_arc->aligned.end(), 1));
     r.reordered_junctions = d.reordered_junctions;
     // The input keeps the calibrated targets too (its arcs are T''s first ones).
     for (int a = 0; a < r.traced.tmesh.num_arcs(); ++a)

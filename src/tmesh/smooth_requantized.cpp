@@ -294,6 +294,7 @@ SmoothedQuads smooth_requantized(const QuadMesh& input, const TMesh& tmesh,
       const auto& q = t.mesh.quads[f];
       if (bimdf::detail::degenerate(t.mesh, q)) {
         ++outcome.degenerate;
+        outcome.degenerate_quads.push_back(f);
         continue;
       }
       if (bimdf::detail::scaled_jacobian(t.mesh, q) >= 0) continue;

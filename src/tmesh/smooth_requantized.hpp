@@ -34,6 +34,7 @@ quant::Layout requantization_layout(const QuadMesh& input, const TMesh& tmesh,
 // separation_repair.hpp) puts a vertex between its corners that smoothing can move.
 struct SmoothedQuads {
   std::vector<int> to_split;
+  std::vector<int> degenerate_quads;
   int inverted = 0;
   int degenerate = 0;
 };

@@ -95,6 +95,22 @@ TEST(HalfArc, InflationCutsTheMeshOpenAlongEachPath) {
   EXPECT_EQ(cut.arc_ends[12][0], t.arc_ends[12][0]);
 }
 
+// The random grid T-mesh of a trial: sizes and paths cycling with `trial`, and on three trials
+// of four short targets, so that arcs collapse and the paths' min-one binds.
+GridTMesh trial_tmesh(std::mt19937& rng, int trial) {
+  GridTMesh g = random_grid_tmesh(rng, 2 + trial % 4, 2 + (trial / 4) % 3, 1 + trial % 6);
+  if (trial % 4 != 0)
+    for (double& x : g.tmesh.arc_target) x *= 0.25;
+  return g;
+}
+
+QuantizeOptions trial_options(int trial) {
+  QuantizeOptions o;
+  o.cost = trial % 2 ? DeviationCost::Absolute : DeviationCost::Quadratic;
+  o.side_weight = trial % 3 == 0 ? 0.0 : 1.0 + trial % 4;
+  return o;
+}
+
 // Random grid T-meshes: the half-arc optimum, exact or bounded, equals the CBC oracle of the
 // half-arc model (with the same bounds for the paths that are not relaxed), passes the three
 // validity conditions, and is never worse than Algorithm 2's quantization.
@@ -102,15 +118,10 @@ TEST(HalfArc, OptimumEqualsTheMilpOracleAndNeverLosesToGreedy) {
   std::mt19937 rng(17);
   int relaxed = 0, better = 0;
   for (int trial = 0; trial < testing::scaled(160); ++trial) {
-    GridTMesh g = random_grid_tmesh(rng, 2 + trial % 4, 2 + (trial / 4) % 3, 1 + trial % 6);
-    TMesh& t = g.tmesh;
-    // Short targets on most: arcs collapse, and the paths' min-one binds.
-    if (trial % 4 != 0)
-      for (double& x : t.arc_target) x *= 0.25;
+    GridTMesh g = trial_tmesh(rng, trial);
+    const TMesh& t = g.tmesh;
     const TMeshIncidence inc = validate_tmesh(t);
-    QuantizeOptions o;
-    o.cost = trial % 2 ? DeviationCost::Absolute : DeviationCost::Quadratic;
-    o.side_weight = trial % 3 == 0 ? 0.0 : 1.0 + trial % 4;
+    const QuantizeOptions o = trial_options(trial);
     // Exact two-gons on half of the trials, bounded ones (reordering free, or at a cost) on the
     // others.
     const double reorder = trial % 2 ? -1.0 : 0.5 * (trial % 3);
@@ -134,6 +145,64 @@ TEST(HalfArc, OptimumEqualsTheMilpOracleAndNeverLosesToGreedy) {
               better);
   EXPECT_GT(relaxed, testing::scaled(160) / 3);
   EXPECT_GT(better, 0);
+}
+
+// Aligned two-gons (the half-arc repair): aligning a random part of the exact two-gons never
+// lowers the optimum nor lets it exceed greedy's; aligned sides are equal copy by copy; and
+// with every two-gon aligned the optimum is the oracle's with both sides pinned together at
+// every vertex of every path (an arc quantization along them, with Algorithm 2's bounds).
+TEST(HalfArc, AlignedTwoGonsHoldAnArcQuantizationAlongTheirPaths) {
+  std::mt19937 rng(23);
+  int aligned_trials = 0, raised = 0;
+  // At least 40 trials, so that a scaled-down run still sees aligning raise an optimum.
+  const int trials = std::max(40, testing::scaled(120));
+  for (int trial = 0; trial < trials; ++trial) {
+    GridTMesh g = trial_tmesh(rng, trial);
+    const TMesh& t = g.tmesh;
+    const TMeshIncidence inc = validate_tmesh(t);
+    const QuantizeOptions o = trial_options(trial);
+    HalfArcSetup setup = prepare_half_arcs(t, inc);
+    const int n = static_cast<int>(setup.inflated.two_gons.size());
+    if (n == 0) continue;
+    ++aligned_trials;
+    const TMeshQuantization exact = quantize_inflated(setup, o);
+    const TMeshQuantization greedy = quantize_tmesh(t, inc, o);
+    ASSERT_EQ(exact.status, SolveStatus::Optimal) << "trial " << trial;
+    std::vector<int> some;
+    for (int k = 0; k < n; ++k)
+      if (rng() % 2) some.push_back(k);
+    const bool all = trial % 3 == 0;
+    if (all || some.empty()) {
+      some.clear();
+      for (int k = 0; k < n; ++k) some.push_back(k);
+    }
+    ASSERT_EQ(align_two_gons(setup, t, inc, some), static_cast<int>(some.size()));
+    ASSERT_EQ(align_two_gons(setup, t, inc, some), 0);  // already aligned
+    const TMeshQuantization q = quantize_inflated(setup, o);
+    ASSERT_EQ(q.status, SolveStatus::Optimal) << "trial " << trial;
+    ASSERT_GE(q.objective, exact.objective - 1e-9) << "trial " << trial;
+    ASSERT_LE(q.objective, greedy.objective + 1e-9) << "trial " << trial;
+    raised += q.objective > exact.objective + 1e-9;
+    const std::vector<int64_t> half = half_arc_lengths(t, setup.inflated, q.arc_length);
+    ASSERT_EQ(check_half_arc_quantization(t, setup.relaxed, half), "") << "trial " << trial;
+    for (int k : some) {
+      const TwoGon& two_gon = setup.inflated.two_gons[k];
+      for (size_t i = 0; i < two_gon.left.size(); ++i)
+        ASSERT_EQ(q.arc_length[TMesh::arc_of(two_gon.left[i])],
+                  q.arc_length[TMesh::arc_of(two_gon.right[i])])
+            << "trial " << trial << ", two-gon " << k << ", arc " << i;
+    }
+    if (static_cast<int>(some.size()) != n) continue;
+    std::vector<std::vector<char>> pinned;
+    for (const TwoGon& two_gon : setup.inflated.two_gons)
+      pinned.emplace_back(two_gon.left.size() + 1, 1);
+    const double oracle = milp_optimum(t, o.cost, o.side_weight, &q.constraints, 12, -1,
+                                       &setup.relaxed, 0.0, &pinned);
+    ASSERT_TRUE(testing::relatively_close(q.objective, oracle))
+        << "trial " << trial << ": " << q.objective << " vs CBC " << oracle;
+  }
+  EXPECT_GT(aligned_trials, trials / 4);
+  EXPECT_GT(raised, 0);  // aligning takes away solutions the exact model used
 }
 
 // T-meshes traced on random quad meshes, both graphs, plain and coarse: the inflated T-mesh

@@ -49,7 +49,14 @@ namespace bimdf::tmesh {
 
 class CollapseError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit CollapseError(const std::string& what, std::vector<int> patches = {})
+      : std::runtime_error(what), patches_(std::move(patches)) {}
+  // The T-mesh patches the fault lies in (the quads' patches, the patches touching the
+  // vertex): where a repair may act. Empty when the fault is everywhere.
+  const std::vector<int>& patches() const { return patches_; }
+
+ private:
+  std::vector<int> patches_;
 };
 
 // Where an output vertex comes from, for smoothing: the T-mesh patches whose region it may

@@ -93,14 +93,15 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
 
 // The bounds of Algorithm 2 that the half-arc model keeps (see above), in T's ids: those of
 // greedy_min_one_constraints(tmesh) covering a path of two or more arcs that is not relaxed
-// (`bounded`: any path of two or more arcs, as a bounded two-gon has no edge carrying its
-// length), plus a min-one bound on the arc of every one-arc path. An arc bound on a cut arc —
-// both of whose copies ≥ 1 would undo the cut — becomes bounds on the sides holding its two
-// copies where it covers a path that is not relaxed (it implies that path through those sides),
-// and a bound on its left copy (the arc's own id in T') where it covers a relaxed one (whose
-// left copies sum to its length).
+// or whose two-gon has no edge carrying its length (`bounded[i]` for relaxed[i]: a bounded or
+// aligned two-gon; empty: none), plus a min-one bound on the arc of every one-arc path. An arc
+// bound on a cut arc — both of whose copies ≥ 1 would undo the cut — becomes bounds on the sides
+// holding its two copies where it covers a path that is not relaxed (it implies that path through
+// those sides), and a bound on its left copy (the arc's own id in T') where it covers a relaxed one
+// (whose left copies sum to its length).
 MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                  const std::vector<int>& relaxed, bool bounded = false);
+                                  const std::vector<int>& relaxed,
+                                  const std::vector<char>& bounded = {});
 
 // Per input half-arc, its length under a quantization of T' (`arc_length`, one per T' arc):
 // an uncut arc gives both of its half-arcs its length, a cut arc each half-arc its copy's.
@@ -127,6 +128,10 @@ std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<in
 // both sides): splitting one into two T-junctions breaks a straight line of the layout in two.
 // Measured (docs/benchmarks.md), that keeps every coarse base complex near greedy's, where
 // drifting crossings shrink most of them by 16–25%.
+//
+// `aligned` (per two-gon, all 0 at first): two-gons held to an arc quantization along their
+// path — sides equal half-arc by half-arc, the path kept by Algorithm 2's bounds again — where
+// the re-embedding could not follow the drift (align_two_gons).
 struct HalfArcSetup {
   std::vector<int> relaxed;  // the input's paths made two-gons (relaxable_paths)
   InflatedTMesh inflated;
@@ -134,9 +139,18 @@ struct HalfArcSetup {
   MinOneConstraints bounds;
   double reorder_weight = -1;
   bool keep_crossings = false;
+  std::vector<char> aligned;
 };
 HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
                                double reorder_weight = -1, bool keep_crossings = false);
+
+// Aligns the two-gons `two_gons` (indices into setup.inflated.two_gons) and recomputes
+// setup.bounds (half_arc_bounds; `tmesh` and `incidence` are the input setup was prepared
+// from). Returns how many were not aligned before. Aligning every two-gon gives a model whose
+// feasible set contains the greedy one's (the arc model with Algorithm 2's bounds): more
+// aligned two-gons never lower the optimum, and all of them keep it ≤ greedy's.
+int align_two_gons(HalfArcSetup& setup, const TMesh& tmesh, const TMeshIncidence& incidence,
+                   const std::vector<int>& two_gons);
 
 // T''s incidence with every half-arc facing a two-gon counted on the patch across it (the side
 // its twin's other half-arc lies on): what the separation repairs and smoothing must see, for

@@ -110,6 +110,10 @@ struct ArcModelOptions {
   // Bounded only (optional, per two-gon and position 0..n along its path): 1 where the offset
   // must stay 0.
   std::vector<std::vector<char>> two_gon_pinned;
+  // Optional, per two-gon: 1 where its sides must equal half-arc by half-arc (an arc
+  // quantization along that path: no drift, no min-one of its own — give it bounds), whatever
+  // the weight; exact or bounded.
+  std::vector<char> two_gon_aligned;
 };
 
 struct ArcModel {
@@ -120,6 +124,7 @@ struct ArcModel {
   // Relaxed only (else empty): per patch, the corner edge between sides k and k+1 (mod 4).
   std::vector<std::array<int, 4>> corner_edge;
   std::vector<int> two_gon_edge;  // exact two-gons: per two-gon, the edge between its nodes
+                                  // (−1 where aligned)
 };
 
 // Builds the Bi-MDF problem with the min-one constraints as lower bounds of 1.

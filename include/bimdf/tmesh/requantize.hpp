@@ -82,6 +82,8 @@ struct RequantizeResult {
   std::optional<HalfArcSetup> half_arc;
   int adapted_arcs = 0;
   int reordered_junctions = 0;
+  // Two-gons the repairs aligned (HalfArcSetup::aligned; see requantize_tmesh).
+  int aligned_two_gons = 0;
   // Not empty when the half-arc quantization did not collapse into a mesh (the collapse's
   // message): the result is then the arc quantization's (half_arc empty), as without half_arc.
   std::string half_arc_fallback;
@@ -125,6 +127,14 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 // (src/tmesh/separation_repair.hpp; for uniform coarse lengths see refit_uniform). Then the
 // T-mesh is quantized again — the lazy constraints the paper (§4.2.3) mentions as unexplored. Each
 // round bounds an element that was 0, so this ends; all elements bounded means nothing collapses.
+// With half_arc, one more repair comes first: where the collapse fails (CollapseError::patches)
+// or smoothing leaves quads inverted or degenerate, the drift of the two-gons along those
+// patches is more than the re-embedding in the patches' parameter domains can follow (the
+// exact model may even drift where an equally good solution does not: its objective has no
+// term for drift). Those two-gons are aligned (align_two_gons: an arc quantization along their
+// paths, with Algorithm 2's bounds) and the T-mesh quantized again — at most max_split_repairs
+// times after smoothing, and kept only if it smooths better, as a split is; on collapse
+// failures until nothing is left to align.
 // `options.trace` is not used. Throws CollapseError if the quantized T-mesh does not collapse into
 // a conforming mesh (see collapse.hpp) — with half_arc, only if the arc quantization it then
 // falls back to does not either (RequantizeResult::half_arc_fallback).
