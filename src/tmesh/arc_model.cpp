@@ -129,8 +129,8 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
           options.two_gon_pinned[t][i + 1])
         continue;
       for (const auto& [from, to] : {std::pair{nodes[i], nodes[i + 1]}, {nodes[i + 1], nodes[i]}})
-        pb.add_edge({from, false}, End{to, true}, 0, kInfinity,
-                    Cost::linear(options.two_gon_reorder_weight));
+        model.drift_edges.push_back(pb.add_edge({from, false}, End{to, true}, 0, kInfinity,
+                                                Cost::linear(options.two_gon_reorder_weight)));
     }
   }
   model.arc_edge.resize(tmesh.num_arcs());

@@ -1,6 +1,7 @@
 // quantize_half_arcs and half_arc_bounds (tmesh/half_arc.hpp): the bounds the half-arc model
 // keeps, the arc model of the inflated T-mesh with its two-gons, and both checks.
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -83,8 +84,10 @@ HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& inciden
   setup.relaxed = relaxable_paths(tmesh, incidence);
   setup.inflated = inflate_two_gons(tmesh, incidence, setup.relaxed);
   setup.incidence = validate_tmesh(setup.inflated.tmesh, "<inflated t-mesh>");
-  setup.bounds = half_arc_bounds(tmesh, incidence, setup.relaxed,
-                                 std::vector<char>(setup.relaxed.size(), reorder_weight >= 0));
+  setup.greedy_bounds =
+      half_arc_bounds(tmesh, incidence, setup.relaxed, std::vector<char>(setup.relaxed.size(), 1));
+  setup.bounds =
+      reorder_weight >= 0 ? setup.greedy_bounds : half_arc_bounds(tmesh, incidence, setup.relaxed);
   setup.reorder_weight = reorder_weight;
   setup.keep_crossings = keep_crossings;
   setup.aligned.assign(setup.inflated.two_gons.size(), 0);
@@ -102,9 +105,9 @@ int align_two_gons(HalfArcSetup& setup, const TMesh& tmesh, const TMeshIncidence
     setup.aligned[g] = 1;
   }
   // Two-gons follow relaxed paths in order (inflate_two_gons), so the flags line up.
-  std::vector<char> bounded = setup.aligned;
-  if (setup.reorder_weight >= 0) bounded.assign(bounded.size(), 1);
-  setup.bounds = half_arc_bounds(tmesh, incidence, setup.relaxed, bounded);
+  setup.bounds = setup.reorder_weight >= 0
+                     ? setup.greedy_bounds
+                     : half_arc_bounds(tmesh, incidence, setup.relaxed, setup.aligned);
   return added;
 }
 
@@ -123,26 +126,58 @@ TMeshIncidence glued_incidence(const HalfArcSetup& setup) {
   return glued;
 }
 
-TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOptions& options) {
-  if (options.relaxed)
-    throw std::invalid_argument("half-arc quantization does not combine with relaxed patches");
+namespace {
+
+// One solve of T''s arc model with `bounds` (and options.extra_constraints), two-gons exact
+// (reorder_weight < 0) or bounded at that weight.
+TMeshQuantization solve_inflated(const HalfArcSetup& setup, const MinOneConstraints& bounds,
+                                 double reorder_weight, bool drift_tie_break,
+                                 const QuantizeOptions& options) {
   TMeshQuantization q;
   bimdf::detail::Stopwatch t;
   const TMesh& cut = setup.inflated.tmesh;
-  q.constraints = setup.bounds;
+  q.constraints = bounds;
   add_constraints(q.constraints, options.extra_constraints);
   ArcModelOptions model;
   model.arc_weight.assign(cut.num_arcs(), 1.0);
   for (int a = 0; a < cut.num_arcs(); ++a)
     if (setup.inflated.twin[a] >= 0) model.arc_weight[a] = 0.5;
   for (const TwoGon& g : setup.inflated.two_gons) model.two_gons.push_back(two_gon_zip(g));
-  model.two_gon_reorder_weight = setup.reorder_weight;
+  model.two_gon_reorder_weight = reorder_weight;
+  model.two_gon_drift_tie_break = drift_tie_break;
   model.two_gon_aligned = setup.aligned;
   if (setup.keep_crossings)
     for (const TwoGon& g : setup.inflated.two_gons) model.two_gon_pinned.push_back(g.crossing);
   q.time_model_s = t.lap();
   detail::run_quantization(cut, setup.incidence, q.constraints, model, options, q);
+  return q;
+}
+
+bool no_worse(double x, double than) { return x <= than + 1e-9 * std::max(1.0, std::fabs(than)); }
+
+}  // namespace
+
+TMeshQuantization quantize_inflated(const HalfArcSetup& setup, const QuantizeOptions& options) {
+  if (options.relaxed)
+    throw std::invalid_argument("half-arc quantization does not combine with relaxed patches");
+  TMeshQuantization q = solve_inflated(setup, setup.bounds, setup.reorder_weight, false, options);
+  const bool any_free = std::count(setup.aligned.begin(), setup.aligned.end(), 0) > 0;
+  if (setup.reorder_weight < 0 && any_free && !q.arc_length.empty()) {
+    TMeshQuantization tie =
+        solve_inflated(setup, setup.greedy_bounds, kDriftTieBreak, true, options);
+    tie.time_model_s += q.time_model_s;
+    tie.time_solve_s += q.time_solve_s;
+    if (tie.arc_length.empty() || !no_worse(tie.coarse_objective, q.coarse_objective) ||
+        !no_worse(tie.objective, q.objective)) {
+      q.time_model_s = tie.time_model_s;
+      q.time_solve_s = tie.time_solve_s;
+    } else {
+      tie.constraints = std::move(q.constraints);  // the exact model's
+      q = std::move(tie);
+    }
+  }
   if (q.arc_length.empty()) return q;
+  const TMesh& cut = setup.inflated.tmesh;
   std::string error = check_quantization(cut, q.arc_length);
   if (error.empty()) error = check_two_gons(setup.inflated, q.arc_length);
   if (!error.empty()) throw std::logic_error("half-arc quantization failed its check: " + error);

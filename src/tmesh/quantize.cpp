@@ -15,7 +15,8 @@ namespace bimdf::tmesh {
 namespace {
 
 // Solves `model` exactly; fills status, objective, solution and lengths of `result`.
-void solve_model(const ArcModel& model, const QuantizeOptions& options, TMeshQuantization& result) {
+void solve_model(const ArcModel& model, const QuantizeOptions& options, TMeshQuantization& result,
+                 bool drift_tie_break) {
   bimdf::detail::Stopwatch t;
   Solver solver(model.problem);
   solver.threads(options.threads);
@@ -27,6 +28,11 @@ void solve_model(const ArcModel& model, const QuantizeOptions& options, TMeshQua
   result.edges = model.problem.num_edges();
   if (result.status != SolveStatus::Optimal && result.status != SolveStatus::Feasible) return;
   result.objective = result.solution.objective;
+  // A drift cost that only breaks ties is no part of the objective (linear: slope × flow).
+  if (drift_tie_break)
+    for (int e : model.drift_edges)
+      result.objective -=
+          model.problem.cost[e].slope() * static_cast<double>(result.solution.flow[e]);
   result.arc_length = arc_lengths(model, result.solution.flow);
 }
 
@@ -69,7 +75,7 @@ void run_quantization(const TMesh& tmesh, const TMeshIncidence& incidence,
   model_options.relaxed_weight = options.relaxed_weight;
   ArcModel model = build_arc_model(tmesh, incidence, constraints, model_options);
   result.time_model_s += t.lap();
-  solve_model(model, options, result);
+  solve_model(model, options, result, model_options.two_gon_drift_tie_break);
   if (options.coarse && options.coarse_uniform && !result.arc_length.empty()) {
     // Every coarse length times one integer k: the layout's combinatorics, and so its base
     // complex, stay exactly those of the coarse stage; k brings the area (Σ width × height)
@@ -90,7 +96,7 @@ void run_quantization(const TMesh& tmesh, const TMeshIncidence& incidence,
       model_options.arc_pattern[a] = result.arc_length[a] > 0 ? 1 : 0;
     model = build_arc_model(tmesh, incidence, constraints, model_options);
     result.time_model_s += t.lap();
-    solve_model(model, options, result);
+    solve_model(model, options, result, model_options.two_gon_drift_tie_break);
     // The coarse solution itself satisfies the fixed pattern: this stage cannot be infeasible.
     if (result.arc_length.empty())
       throw std::logic_error("coarse quantization: the fixed zero pattern became infeasible");

@@ -132,17 +132,32 @@ std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<in
 // `aligned` (per two-gon, all 0 at first): two-gons held to an arc quantization along their
 // path — sides equal half-arc by half-arc, the path kept by Algorithm 2's bounds again — where
 // the re-embedding could not follow the drift (align_two_gons).
+//
+// Exact two-gons have no term for drift, and where equally good solutions abound (coarse
+// layouts) the solver's may drift for nothing. So an exact solve is followed by a bounded one
+// with every path under Algorithm 2's bounds (`greedy_bounds`) and each unit of drift costing
+// kDriftTieBreak: when that is as good (both objectives within 1e-9, relative, drift cost left
+// out), its solution — an optimum of the exact model too, as its feasible set lies inside the
+// exact one's, with the least drift among those — is returned. Whenever the exact optimum is
+// no better than greedy's, the result therefore has no drift at all (greedy's own solution is
+// a candidate).
 struct HalfArcSetup {
   std::vector<int> relaxed;  // the input's paths made two-gons (relaxable_paths)
   InflatedTMesh inflated;
   TMeshIncidence incidence;  // of inflated.tmesh
   MinOneConstraints bounds;
+  MinOneConstraints greedy_bounds;  // half_arc_bounds with every two-gon bounded
   double reorder_weight = -1;
   bool keep_crossings = false;
   std::vector<char> aligned;
 };
 HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
                                double reorder_weight = -1, bool keep_crossings = false);
+
+// The drift cost of the exact model's tie-break (HalfArcSetup): small enough that drift never
+// outweighs an objective's difference in practice (coarse objectives move in steps of ¼ at
+// least; 10⁵ units of drift cost 0.1), while the solver still sees it.
+inline constexpr double kDriftTieBreak = 1e-6;
 
 // Aligns the two-gons `two_gons` (indices into setup.inflated.two_gons) and recomputes
 // setup.bounds (half_arc_bounds; `tmesh` and `incidence` are the input setup was prepared

@@ -114,6 +114,9 @@ struct ArcModelOptions {
   // quantization along that path: no drift, no min-one of its own — give it bounds), whatever
   // the weight; exact or bounded.
   std::vector<char> two_gon_aligned;
+  // Bounded two-gons whose drift cost only breaks ties (the exact model's tie-break,
+  // quantize_inflated): the objectives reported leave it out.
+  bool two_gon_drift_tie_break = false;
 };
 
 struct ArcModel {
@@ -125,6 +128,7 @@ struct ArcModel {
   std::vector<std::array<int, 4>> corner_edge;
   std::vector<int> two_gon_edge;  // exact two-gons: per two-gon, the edge between its nodes
                                   // (−1 where aligned)
+  std::vector<int> drift_edges;   // bounded two-gons: the rungs, each carrying one way's drift
 };
 
 // Builds the Bi-MDF problem with the min-one constraints as lower bounds of 1.
