@@ -106,8 +106,19 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
     const bool ladder = options.two_gon_reorder_weight >= 0 || aligned;
     if (ladder && sides[1].size() != n)
       throw std::invalid_argument("a bounded two-gon needs as many half-arcs on either side");
+    // Exact with two overlapping paths: a chain of nodes per side (position p's half-arc
+    // enters node p of its side), so that each side's prefix and suffix sums are edges.
+    const std::array<int, 2> split =
+        t < options.two_gon_split.size() ? options.two_gon_split[t] : std::array<int, 2>{-1, -1};
+    const bool chains = !ladder && split[0] >= 0;
+    if (chains && !(sides[1].size() == n && 0 < split[1] && split[1] < split[0] &&
+                    split[0] < static_cast<int>(n)))
+      throw std::invalid_argument("two-gon " + std::to_string(t) + ": overlap split (" +
+                                  std::to_string(split[0]) + ", " + std::to_string(split[1]) +
+                                  ") does not fit its " + std::to_string(n) + " half-arcs");
     std::vector<int> nodes;
-    for (size_t i = 0; i < (ladder ? n : 2); ++i) nodes.push_back(pb.add_node(0));
+    for (size_t i = 0; i < (ladder ? n : chains ? 2 * n + 2 : 2); ++i)
+      nodes.push_back(pb.add_node(0));
     for (int c = 0; c < 2; ++c)
       for (size_t i = 0; i < sides[c].size(); ++i) {
         const int h = sides[c][i];
@@ -115,8 +126,29 @@ ArcModel build_arc_model(const TMesh& tmesh, const TMeshIncidence& incidence,
             border_end[h].node >= 0)
           throw std::invalid_argument("two-gon half-arc " + std::to_string(h) +
                                       " is not a border half-arc of one two-gon");
-        border_end[h] = ladder ? End{nodes[c == 0 ? i : n - 1 - i], c == 0} : End{nodes[c], true};
+        const size_t position = c == 0 ? i : n - 1 - i;
+        border_end[h] = ladder   ? End{nodes[position], c == 0}
+                        : chains ? End{nodes[2 + c * n + position], true}
+                                 : End{nodes[c], true};
       }
+    if (chains) {
+      // Side c's chain flows into its hub (node c) at a vertex position k: forward from the
+      // tail (the edge from position p < k carrying the prefix sum to vertex p + 1), backward
+      // from the head (suffix sums). The first path is the second side's prefix to split[0],
+      // the second path the first side's suffix from split[1]: lower bound 1 on those edges.
+      for (int c = 0; c < 2; ++c) {
+        const int k = split[1 - c], base = 2 + c * static_cast<int>(n);
+        for (int p = 0; p < static_cast<int>(n); ++p) {
+          const int to = p + 1 == k ? c : p < k ? base + p + 1 : p == k ? c : base + p - 1;
+          const bool measured = (c == 1 && p + 1 == k) || (c == 0 && p == k);
+          pb.add_edge({nodes[base + p], false}, End{nodes[to], true}, measured ? 1 : 0, kInfinity,
+                      Cost::zero());
+        }
+      }
+      model.two_gon_edge.push_back(
+          pb.add_edge({nodes[0], false}, End{nodes[1], false}, 0, kInfinity, Cost::zero()));
+      continue;
+    }
     if (!ladder) {
       model.two_gon_edge.push_back(
           pb.add_edge({nodes[0], false}, End{nodes[1], false}, 1, kInfinity, Cost::zero()));

@@ -27,7 +27,7 @@ std::string check_two_gons(const InflatedTMesh& inflated, const std::vector<int6
     for (int h : g.left) left += arc_length[TMesh::arc_of(h)];
     for (int h : g.right) right += arc_length[TMesh::arc_of(h)];
     if (left != right)
-      return "the two-gon of path " + std::to_string(g.path) + " has sides " +
+      return "the two-gon of path " + std::to_string(g.paths[0]) + " has sides " +
              std::to_string(left) + " and " + std::to_string(right);
   }
   return "";
@@ -36,31 +36,34 @@ std::string check_two_gons(const InflatedTMesh& inflated, const std::vector<int6
 }  // namespace
 
 MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                  const std::vector<int>& relaxed,
-                                  const std::vector<char>& bounded) {
-  if (!bounded.empty() && bounded.size() != relaxed.size())
-    throw std::invalid_argument("half_arc_bounds: one bounded flag per relaxed path");
+                                  const InflatedTMesh& inflated, const std::vector<char>& bounded) {
+  if (!bounded.empty() && bounded.size() != inflated.two_gons.size())
+    throw std::invalid_argument("half_arc_bounds: one bounded flag per two-gon");
   std::vector<int> cover;
   const MinOneConstraints greedy = greedy_min_one_constraints(tmesh, incidence, &cover);
-  // Per relaxed path's arcs: whether its two-gon needs Algorithm 2's bounds.
-  std::map<std::vector<int>, bool> relaxed_arcs;
+  // Per set of arcs of a relaxed path: whether it keeps Algorithm 2's bounds, and on which side
+  // of its line it is measured (0 left, 1 right).
+  std::map<std::vector<int>, std::pair<bool, int>> relaxed;
   std::vector<char> cut(tmesh.num_arcs(), 0);
-  for (size_t i = 0; i < relaxed.size(); ++i) {
-    const int m = relaxed[i];
-    relaxed_arcs[arcs_along(tmesh.nonzero_paths[m])] = !bounded.empty() && bounded[i];
-    for (int h : tmesh.nonzero_paths[m]) cut[TMesh::arc_of(h)] = 1;
+  for (size_t k = 0; k < inflated.two_gons.size(); ++k) {
+    const TwoGon& g = inflated.two_gons[k];
+    for (size_t j = 0; j < g.paths.size(); ++j)
+      relaxed[arcs_along(tmesh.nonzero_paths[g.paths[j]])] = {!bounded.empty() && bounded[k],
+                                                              static_cast<int>(j)};
+    for (int h : g.left) cut[TMesh::arc_of(h)] = 1;
   }
   MinOneConstraints out;
-  // Per bound of Algorithm 2: 1 if it covers a path kept by bounds, 2 if a relaxed one (bounded).
+  // Per bound of Algorithm 2: 1 if it covers a path kept by bounds, 2 / 4 if a relaxed one
+  // measured on the left / right of its line.
   std::vector<int> keep(greedy.sides.size() + greedy.arcs.size(), 0);
   for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m) {
     const std::vector<int> arcs = arcs_along(tmesh.nonzero_paths[m]);
     if (arcs.size() == 1)
       out.arcs.push_back(arcs.front());  // exact: the path is its arc
-    else if (const auto it = relaxed_arcs.find(arcs); it == relaxed_arcs.end())
+    else if (const auto it = relaxed.find(arcs); it == relaxed.end())
       keep[cover[m]] |= 1;
-    else if (it->second)
-      keep[cover[m]] |= 2;
+    else if (it->second.first)
+      keep[cover[m]] |= it->second.second == 0 ? 2 : 4;
   }
   for (size_t i = 0; i < greedy.sides.size(); ++i)
     if (keep[i]) out.sides.push_back(greedy.sides[i]);
@@ -72,6 +75,7 @@ MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& inci
       for (int h : {2 * a, 2 * a + 1})
         out.sides.push_back({incidence.half_arc_patch[h], incidence.half_arc_side[h]});
     if (why & 2) out.arcs.push_back(a);
+    if (why & 4) out.arcs.push_back(inflated.twin[a]);
   }
   sort_unique(out.arcs);
   sort_unique(out.sides);
@@ -84,10 +88,10 @@ HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& inciden
   setup.relaxed = relaxable_paths(tmesh, incidence);
   setup.inflated = inflate_two_gons(tmesh, incidence, setup.relaxed);
   setup.incidence = validate_tmesh(setup.inflated.tmesh, "<inflated t-mesh>");
-  setup.greedy_bounds =
-      half_arc_bounds(tmesh, incidence, setup.relaxed, std::vector<char>(setup.relaxed.size(), 1));
+  setup.greedy_bounds = half_arc_bounds(tmesh, incidence, setup.inflated,
+                                        std::vector<char>(setup.inflated.two_gons.size(), 1));
   setup.bounds =
-      reorder_weight >= 0 ? setup.greedy_bounds : half_arc_bounds(tmesh, incidence, setup.relaxed);
+      reorder_weight >= 0 ? setup.greedy_bounds : half_arc_bounds(tmesh, incidence, setup.inflated);
   setup.reorder_weight = reorder_weight;
   setup.keep_crossings = keep_crossings;
   setup.aligned.assign(setup.inflated.two_gons.size(), 0);
@@ -104,10 +108,9 @@ int align_two_gons(HalfArcSetup& setup, const TMesh& tmesh, const TMeshIncidence
     added += !setup.aligned[g];
     setup.aligned[g] = 1;
   }
-  // Two-gons follow relaxed paths in order (inflate_two_gons), so the flags line up.
   setup.bounds = setup.reorder_weight >= 0
                      ? setup.greedy_bounds
-                     : half_arc_bounds(tmesh, incidence, setup.relaxed, setup.aligned);
+                     : half_arc_bounds(tmesh, incidence, setup.inflated, setup.aligned);
   return added;
 }
 
@@ -146,8 +149,16 @@ TMeshQuantization solve_inflated(const HalfArcSetup& setup, const MinOneConstrai
   model.two_gon_reorder_weight = reorder_weight;
   model.two_gon_drift_tie_break = drift_tie_break;
   model.two_gon_aligned = setup.aligned;
-  if (setup.keep_crossings)
-    for (const TwoGon& g : setup.inflated.two_gons) model.two_gon_pinned.push_back(g.crossing);
+  for (const TwoGon& g : setup.inflated.two_gons)
+    model.two_gon_split.push_back({g.left_end, g.right_start});
+  // A ladder does not drift at the inner ends of an overlapping pair either: both paths' sides
+  // then sum equally, as a path alone's do, so that Algorithm 2's bounds hold either side.
+  for (const TwoGon& g : setup.inflated.two_gons) {
+    std::vector<char> pinned =
+        setup.keep_crossings ? g.crossing : std::vector<char>(g.left.size() + 1, 0);
+    if (g.paths.size() == 2) pinned[g.left_end] = pinned[g.right_start] = 1;
+    model.two_gon_pinned.push_back(std::move(pinned));
+  }
   q.time_model_s = t.lap();
   detail::run_quantization(cut, setup.incidence, q.constraints, model, options, q);
   return q;
@@ -193,7 +204,8 @@ HalfArcQuantization quantize_half_arcs(const TMesh& tmesh, const TMeshIncidence&
   r.quantization = quantize_inflated(r, options);
   if (r.quantization.arc_length.empty()) return r;
   r.half_arc_length = half_arc_lengths(tmesh, r.inflated, r.quantization.arc_length);
-  const std::string error = check_half_arc_quantization(tmesh, r.relaxed, r.half_arc_length);
+  const std::string error =
+      check_half_arc_quantization(tmesh, r.inflated.two_gons, r.half_arc_length);
   if (!error.empty()) throw std::logic_error("half-arc quantization failed its check: " + error);
   return r;
 }

@@ -22,10 +22,11 @@ struct Line {
   int reordered = 0;
 };
 
-// `degree`: arcs of T' at each vertex. `merge_into`: receives, per right copy merged into its
-// left copy, the left copy.
+// `anchored`: per T' vertex, whether it stays a T-mesh vertex on its own — arcs other than the
+// line's attached, or a non-zero path ending there. `merge_into`: receives, per right copy
+// merged into its left copy, the left copy.
 Line close_two_gon(const TMesh& cut, const TwoGon& g, const std::vector<int64_t>& length,
-                   const std::vector<int>& degree, std::vector<int>& merge_into) {
+                   const std::vector<char>& anchored, std::vector<int>& merge_into) {
   const size_t n = g.left.size();
   std::vector<int> u(n + 1), w(n + 1);
   std::vector<int64_t> pu(n + 1, 0), pw(n + 1, 0);
@@ -36,10 +37,11 @@ Line close_two_gon(const TMesh& cut, const TwoGon& g, const std::vector<int64_t>
     pw[i + 1] = pw[i] + length[TMesh::arc_of(g.right[i])];
   }
   if (u[0] != w[0] || u[n] != w[n] || pu[n] != pw[n])
-    throw std::invalid_argument("deflate_two_gons: the two-gon of path " + std::to_string(g.path) +
-                                " does not close (its sides differ)");
+    throw std::invalid_argument("deflate_two_gons: the two-gon of path " +
+                                std::to_string(g.paths[0]) + " does not close (its sides differ)");
   // Interior path vertices, each side's copy at its position; a copy with nothing attached on
-  // its side (only the path's two arcs) is no T-mesh vertex any more and drops out, and both
+  // its side (only the path's two arcs) and no non-zero path ending there (the second path of an
+  // overlapping pair starts at a right copy) is no T-mesh vertex any more and drops out, and both
   // copies at one position stay one vertex. Ties by place along the path keep each side's order.
   struct Item {
     int64_t position;
@@ -48,7 +50,7 @@ Line close_two_gon(const TMesh& cut, const TwoGon& g, const std::vector<int64_t>
   };
   std::vector<Item> items;
   for (size_t i = 1; i < n; ++i) {
-    const bool left = degree[u[i]] > 2, right = degree[w[i]] > 2;
+    const bool left = anchored[u[i]], right = anchored[w[i]];
     if (left || (right && pu[i] == pw[i])) items.push_back({pu[i], i, 0});
     if (right && pu[i] != pw[i]) items.push_back({pw[i], i, 1});
     if (right && pu[i] == pw[i]) merge_into[w[i]] = u[i];
@@ -91,6 +93,11 @@ DeflatedTMesh deflate_two_gons(const InflatedTMesh& inflated,
                                 " lengths for " + std::to_string(cut.num_arcs()) + " arcs");
   std::vector<int> degree(cut.num_vertices(), 0);
   for (const auto& ends : cut.arc_ends) ++degree[ends[0]], ++degree[ends[1]];
+  std::vector<char> anchored(cut.num_vertices(), 0);
+  for (int v = 0; v < cut.num_vertices(); ++v) anchored[v] = degree[v] > 2;
+  for (const auto& path : cut.nonzero_paths)
+    if (!path.empty())
+      anchored[cut.half_arc_tail(path.front())] = anchored[cut.half_arc_head(path.back())] = 1;
   std::vector<int> merge_into(cut.num_vertices(), -1);
   std::vector<Line> lines;
   // Per T' half-arc on a two-gon: (two-gon, index along the path, side 0 left / 1 right).
@@ -98,7 +105,7 @@ DeflatedTMesh deflate_two_gons(const InflatedTMesh& inflated,
   DeflatedTMesh out;
   for (size_t t = 0; t < inflated.two_gons.size(); ++t) {
     const TwoGon& g = inflated.two_gons[t];
-    lines.push_back(close_two_gon(cut, g, arc_length, degree, merge_into));
+    lines.push_back(close_two_gon(cut, g, arc_length, anchored, merge_into));
     out.reordered_junctions += lines.back().reordered;
     for (size_t i = 0; i < g.left.size(); ++i) {
       const int ti = static_cast<int>(t), ii = static_cast<int>(i);

@@ -2,7 +2,10 @@
 // non-zero paths may be relaxed, the T-mesh cut open along them, and the independent check of a
 // half-arc quantization.
 #include <algorithm>
+#include <array>
 #include <map>
+#include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -75,7 +78,14 @@ Fan right_fan(const TMesh& t, const PatchBoundary& b, int in, int out) {
 // `interior_uses` count the distinct paths running along each arc / through each vertex.
 std::string relax_issue(const TMesh& t, const TMeshIncidence& inc, const PatchBoundary& b,
                         const std::vector<int>& path, const std::vector<int>& arc_uses,
-                        const std::vector<int>& interior_uses) {
+                        const std::vector<int>& interior_uses, const std::vector<int>* partner) {
+  // An overlapping partner (a pair, OverlapLine) shares arcs and interior vertices with it.
+  const auto interior_of_partner = [&](int c) {
+    if (!partner) return false;
+    for (size_t i = 1; i < partner->size(); ++i)
+      if (t.half_arc_tail((*partner)[i]) == c) return true;
+    return false;
+  };
   if (path.size() < 2) return "it runs along one arc";
   if (arcs_along(path).size() != path.size()) return "it runs along an arc twice";
   std::vector<int> vertices{t.half_arc_tail(path.front())};
@@ -87,11 +97,12 @@ std::string relax_issue(const TMesh& t, const TMeshIncidence& inc, const PatchBo
     if (inc.is_border(h) || inc.is_border(TMesh::opposite(h))) return "it runs along the border";
     if (!t.arc_feature.empty() && t.arc_feature[TMesh::arc_of(h)])
       return "it runs along a feature curve";
-    if (arc_uses[TMesh::arc_of(h)] > 1) return "another path shares its arc";
+    if (arc_uses[TMesh::arc_of(h)] > (partner ? 2 : 1)) return "another path shares its arc";
   }
   for (size_t i = 1; i < path.size(); ++i) {
     const int c = t.half_arc_tail(path[i]);
-    if (interior_uses[c] > 1) return "another path passes its vertex " + std::to_string(c);
+    if (interior_uses[c] > (interior_of_partner(c) ? 2 : 1))
+      return "another path passes its vertex " + std::to_string(c);
     const Fan left = left_fan(t, b, path[i - 1], path[i]);
     const Fan right = right_fan(t, b, path[i - 1], path[i]);
     if (left.border || right.border) return "its vertex " + std::to_string(c) + " is on the border";
@@ -114,8 +125,62 @@ std::vector<int> representatives(const TMesh& t) {
   return rep;
 }
 
+// A sequence of half-arcs walked the other way.
+std::vector<int> reversed(const std::vector<int>& half_arcs) {
+  std::vector<int> out;
+  for (auto h = half_arcs.rbegin(); h != half_arcs.rend(); ++h) out.push_back(TMesh::opposite(*h));
+  return out;
+}
+
+// Two paths on one line that overlap partially, each reaching past the other's end: their
+// union (`line`, oriented canonically: the smaller of its two half-arc sequences), which of the
+// two starts at the line's tail (`first`: 0 for a, 1 for b), where it ends (`first_end`, a
+// vertex position along the line) and where the other starts (`second_start`).
+struct OverlapLine {
+  std::vector<int> line;
+  int first = 0, first_end = 0, second_start = 0;
+};
+
+std::optional<OverlapLine> overlap_line(const TMesh& t, const std::vector<int>& a,
+                                        const std::vector<int>& b) {
+  for (int swap = 0; swap < 2; ++swap) {
+    const std::vector<int>& head = swap ? b : a;  // the one at the union's tail, if any
+    for (const std::vector<int>& tail : {swap ? a : b, reversed(swap ? a : b)}) {
+      // tail's first arcs repeat head's last ones, from head's position k on.
+      for (size_t k = 1; k < head.size(); ++k) {
+        const size_t shared = head.size() - k;
+        if (tail.size() <= shared || !std::equal(head.begin() + k, head.end(), tail.begin()))
+          continue;
+        OverlapLine o;
+        o.line = head;
+        o.line.insert(o.line.end(), tail.begin() + shared, tail.end());
+        o.first = swap;
+        o.first_end = static_cast<int>(head.size());
+        o.second_start = static_cast<int>(k);
+        std::vector<int> vertices{t.half_arc_tail(o.line.front())};
+        for (int h : o.line) vertices.push_back(t.half_arc_head(h));
+        std::sort(vertices.begin(), vertices.end());
+        if (std::adjacent_find(vertices.begin(), vertices.end()) != vertices.end())
+          return std::nullopt;
+        const std::vector<int> back = reversed(o.line);
+        if (back < o.line) {
+          const int n = static_cast<int>(o.line.size());
+          o.line = back;
+          o.first = 1 - o.first;
+          const int first_end = n - o.second_start;
+          o.second_start = n - o.first_end;
+          o.first_end = first_end;
+        }
+        return o;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 struct Relaxability {
   std::vector<int> representative;
+  std::vector<int> partner;        // per representative path: the path it overlaps, or −1
   std::vector<std::string> issue;  // per representative path
 };
 
@@ -124,16 +189,39 @@ Relaxability relaxability(const TMesh& t, const TMeshIncidence& inc) {
   r.representative = representatives(t);
   const auto& paths = t.nonzero_paths;
   std::vector<int> arc_uses(t.num_arcs(), 0), interior_uses(t.num_vertices(), 0);
+  std::vector<std::vector<int>> on_arc(t.num_arcs());  // the representative paths along it
   for (size_t m = 0; m < paths.size(); ++m) {
     if (r.representative[m] != static_cast<int>(m)) continue;
-    for (int a : arcs_along(paths[m])) ++arc_uses[a];
+    for (int a : arcs_along(paths[m])) ++arc_uses[a], on_arc[a].push_back(static_cast<int>(m));
     for (size_t i = 1; i < paths[m].size(); ++i) ++interior_uses[t.half_arc_tail(paths[m][i])];
+  }
+  // Pairs: two paths sharing arcs with each other only, overlapping partially along one line.
+  const auto sharing = [&](int m) {
+    std::vector<int> others;
+    for (int a : arcs_along(paths[m]))
+      for (int q : on_arc[a])
+        if (q != m) others.push_back(q);
+    std::sort(others.begin(), others.end());
+    others.erase(std::unique(others.begin(), others.end()), others.end());
+    return others;
+  };
+  r.partner.assign(paths.size(), -1);
+  for (size_t m = 0; m < paths.size(); ++m) {
+    if (r.representative[m] != static_cast<int>(m)) continue;
+    const std::vector<int> others = sharing(static_cast<int>(m));
+    if (others.size() != 1 || sharing(others[0]) != std::vector<int>{static_cast<int>(m)}) continue;
+    if (overlap_line(t, paths[m], paths[others[0]])) r.partner[m] = others[0];
   }
   const PatchBoundary boundary(t, inc);
   r.issue.resize(paths.size());
   for (size_t m = 0; m < paths.size(); ++m)
     if (r.representative[m] == static_cast<int>(m))
-      r.issue[m] = relax_issue(t, inc, boundary, paths[m], arc_uses, interior_uses);
+      r.issue[m] = relax_issue(t, inc, boundary, paths[m], arc_uses, interior_uses,
+                               r.partner[m] >= 0 ? &paths[r.partner[m]] : nullptr);
+  // A pair is relaxed together or not at all.
+  for (size_t m = 0; m < paths.size(); ++m)
+    if (r.partner[m] >= 0 && r.issue[m].empty() && !r.issue[r.partner[m]].empty())
+      r.issue[m] = "it overlaps path " + std::to_string(r.partner[m]) + ", which cannot be relaxed";
   return r;
 }
 
@@ -160,6 +248,29 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
     if (!r.issue[m].empty())
       throw std::invalid_argument("inflate_two_gons: path " + std::to_string(m) +
                                   " cannot be relaxed: " + r.issue[m]);
+    if (r.partner[m] >= 0 && std::find(paths.begin(), paths.end(), r.partner[m]) == paths.end())
+      throw std::invalid_argument("inflate_two_gons: path " + std::to_string(m) +
+                                  " overlaps path " + std::to_string(r.partner[m]) +
+                                  ", which must be relaxed with it");
+  }
+  // The lines to cut along: a path alone, or a pair's union (once, at its first path).
+  std::vector<TwoGon> lines;
+  std::vector<std::vector<int>> line_half_arcs;
+  for (int m : paths) {
+    TwoGon g;
+    const int q = r.partner[m];
+    if (q < 0) {
+      g.paths = {m};
+      line_half_arcs.push_back(tmesh.nonzero_paths[m]);
+    } else {
+      if (q < m && std::find(paths.begin(), paths.end(), q) != paths.end()) continue;
+      const OverlapLine o = *overlap_line(tmesh, tmesh.nonzero_paths[m], tmesh.nonzero_paths[q]);
+      g.paths = o.first == 0 ? std::vector<int>{m, q} : std::vector<int>{q, m};
+      g.left_end = o.first_end;
+      g.right_start = o.second_start;
+      line_half_arcs.push_back(o.line);
+    }
+    lines.push_back(std::move(g));
   }
   InflatedTMesh out;
   TMesh& o = out.tmesh;
@@ -176,9 +287,9 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
   // they belong to, so that right copies made below find their ends already moved.
   const PatchBoundary boundary(tmesh, incidence);
   std::vector<int> right_copy(tmesh.num_vertices(), -1);
-  std::vector<std::vector<char>> crossing(tmesh.nonzero_paths.size());
-  for (int m : paths) {
-    const std::vector<int>& path = tmesh.nonzero_paths[m];
+  for (size_t l = 0; l < lines.size(); ++l) {
+    const std::vector<int>& path = line_half_arcs[l];
+    lines[l].crossing.assign(path.size() + 1, 0);
     for (size_t i = 1; i < path.size(); ++i) {
       const int c = tmesh.half_arc_tail(path[i]);
       const int copy = o.num_vertices();
@@ -188,16 +299,13 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
       right_copy[c] = copy;
       const Fan right = right_fan(tmesh, boundary, path[i - 1], path[i]);
       for (int g : right.outgoing) o.arc_ends[TMesh::arc_of(g)][g & 1] = copy;
-      crossing[m].resize(path.size() + 1, 0);
-      crossing[m][i] = !right.outgoing.empty() &&
-                       !left_fan(tmesh, boundary, path[i - 1], path[i]).outgoing.empty();
+      lines[l].crossing[i] = !right.outgoing.empty() &&
+                             !left_fan(tmesh, boundary, path[i - 1], path[i]).outgoing.empty();
     }
   }
-  for (int m : paths) {
-    const std::vector<int>& path = tmesh.nonzero_paths[m];
-    TwoGon two_gon;
-    two_gon.path = m;
-    two_gon.crossing = std::move(crossing[m]);
+  for (size_t l = 0; l < lines.size(); ++l) {
+    const std::vector<int>& path = line_half_arcs[l];
+    TwoGon& two_gon = lines[l];
     for (size_t i = 0; i < path.size(); ++i) {
       const int h = path[i], a = TMesh::arc_of(h), copy = o.num_arcs();
       const int from = i == 0 ? o.half_arc_tail(h) : right_copy[tmesh.half_arc_tail(h)];
@@ -221,8 +329,20 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
       two_gon.left.push_back(h);
       two_gon.right.push_back(2 * copy);
     }
-    out.two_gons.push_back(std::move(two_gon));
   }
+  // The second path of a pair is measured on the right: in T' it runs along the right copies
+  // (and so do its duplicates), so that it starts at its own vertex's right copy.
+  for (size_t l = 0; l < lines.size(); ++l) {
+    const TwoGon& g = lines[l];
+    if (g.paths.size() != 2) continue;
+    const std::vector<int> along(g.right.begin() + g.right_start, g.right.end());
+    for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m)
+      if (r.representative[m] == g.paths[1])
+        o.nonzero_paths[m] = tmesh.nonzero_paths[m].front() == line_half_arcs[l][g.right_start]
+                                 ? along
+                                 : reversed(along);
+  }
+  out.two_gons = std::move(lines);
   return out;
 }
 
@@ -248,7 +368,7 @@ std::vector<int64_t> half_arc_lengths(const TMesh& tmesh, const InflatedTMesh& i
   return out;
 }
 
-std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<int>& relaxed,
+std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<TwoGon>& two_gons,
                                         const std::vector<int64_t>& half_arc_length) {
   const auto& H = half_arc_length;
   if (static_cast<int>(H.size()) != tmesh.num_half_arcs())
@@ -258,10 +378,17 @@ std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<in
   for (const auto& sides : tmesh.patch_sides)
     for (const auto& side : sides)
       for (int h : side) on_side[h] = 1;
-  for (int m : relaxed) {
-    if (m < 0 || m >= static_cast<int>(tmesh.nonzero_paths.size()))
-      return "no non-zero path " + std::to_string(m);
-    for (int h : tmesh.nonzero_paths[m]) cut[TMesh::arc_of(h)] = 1;
+  std::set<std::vector<int>> relaxed;  // the arcs of each relaxed path
+  for (const TwoGon& g : two_gons) {
+    for (int m : g.paths) {
+      if (m < 0 || m >= static_cast<int>(tmesh.nonzero_paths.size()))
+        return "no non-zero path " + std::to_string(m);
+      relaxed.insert(arcs_along(tmesh.nonzero_paths[m]));
+    }
+    for (int h : g.left) {
+      if (h < 0 || h >= tmesh.num_half_arcs()) return "no half-arc " + std::to_string(h);
+      cut[TMesh::arc_of(h)] = 1;
+    }
   }
   // A border half-arc has no length of its own: its arc's is the other half's.
   const auto length = [&](int h) { return on_side[h] ? H[h] : H[TMesh::opposite(h)]; };
@@ -283,14 +410,27 @@ std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<in
                std::to_string(k + 2) + " have lengths " + std::to_string(x) + " and " +
                std::to_string(y);
     }
-  for (int m : relaxed) {
-    int64_t left = 0, right = 0;
-    for (int h : tmesh.nonzero_paths[m]) left += H[h], right += H[TMesh::opposite(h)];
-    if (left != right)
-      return "path " + std::to_string(m) + ": its sides have lengths " + std::to_string(left) +
-             " and " + std::to_string(right);
+  for (const TwoGon& g : two_gons) {
+    const int n = static_cast<int>(g.left.size());
+    // Prefix sums of either side along the line: sum[c][i] over its first i half-arcs.
+    std::array<std::vector<int64_t>, 2> sum{std::vector<int64_t>(n + 1, 0),
+                                            std::vector<int64_t>(n + 1, 0)};
+    for (int i = 0; i < n; ++i) {
+      sum[0][i + 1] = sum[0][i] + H[g.left[i]];
+      sum[1][i + 1] = sum[1][i] + H[TMesh::opposite(g.left[i])];
+    }
+    const std::string line = "the line of path " + std::to_string(g.paths.front());
+    if (sum[0][n] != sum[1][n])
+      return line + ": its sides have lengths " + std::to_string(sum[0][n]) + " and " +
+             std::to_string(sum[1][n]);
+    if (g.paths.size() == 1 && sum[0][n] < 1) return line + ": it has length 0";
+    if (g.paths.size() == 2 && sum[0][g.left_end] < 1)
+      return "path " + std::to_string(g.paths[0]) + ": its left side has length 0";
+    if (g.paths.size() == 2 && sum[1][n] - sum[1][g.right_start] < 1)
+      return "path " + std::to_string(g.paths[1]) + ": its right side has length 0";
   }
   for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m) {
+    if (relaxed.count(arcs_along(tmesh.nonzero_paths[m]))) continue;
     int64_t sum = 0;
     for (int h : tmesh.nonzero_paths[m]) sum += length(h);
     if (sum == 0) return "non-zero path " + std::to_string(m) + " has length 0";

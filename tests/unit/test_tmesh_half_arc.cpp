@@ -95,6 +95,31 @@ TEST(HalfArc, InflationCutsTheMeshOpenAlongEachPath) {
   EXPECT_EQ(cut.arc_ends[12][0], t.arc_ends[12][0]);
 }
 
+// Two paths overlapping along y = 1 — x = 0 to 2 and, walked back, x = 3 to 1 — are relaxed
+// together: one two-gon along their union, the first measured on the left up to x = 2, the
+// second on the right from x = 1; in T' the second runs back along the right copies.
+TEST(HalfArc, OverlappingPathsShareOneTwoGon) {
+  GridTMesh g = three_by_two();
+  TMesh& t = g.tmesh;
+  t.nonzero_paths = {{2 * 5 + 1, 2 * 4 + 1}, {2 * 3, 2 * 4}};
+  const TMeshIncidence inc = validate_tmesh(t);
+  ASSERT_EQ(relaxable_paths(t, inc), (std::vector<int>{0, 1}));
+  EXPECT_THROW(inflate_two_gons(t, inc, {0}), std::invalid_argument);  // not without path 1
+  const InflatedTMesh inflated = inflate_two_gons(t, inc, {0, 1});
+  ASSERT_EQ(inflated.two_gons.size(), 1u);
+  const TwoGon& two_gon = inflated.two_gons[0];
+  EXPECT_EQ(two_gon.left, (std::vector<int>{6, 8, 10}));  // the union, canonically oriented
+  EXPECT_EQ(two_gon.paths, (std::vector<int>{1, 0}));
+  EXPECT_EQ(two_gon.left_end, 2);
+  EXPECT_EQ(two_gon.right_start, 1);
+  EXPECT_EQ(inflated.tmesh.nonzero_paths[0],
+            (std::vector<int>{two_gon.right[2] ^ 1, two_gon.right[1] ^ 1}));
+  EXPECT_EQ(inflated.tmesh.nonzero_paths[1], t.nonzero_paths[1]);
+  // A third path along the same line leaves neither relaxed.
+  t.nonzero_paths.push_back({2 * 4});
+  EXPECT_EQ(relaxable_paths(t, validate_tmesh(t)), std::vector<int>{});
+}
+
 // The random grid T-mesh of a trial: sizes and paths cycling with `trial`, and on three trials
 // of four short targets, so that arcs collapse and the paths' min-one binds.
 GridTMesh trial_tmesh(std::mt19937& rng, int trial) {
@@ -102,6 +127,25 @@ GridTMesh trial_tmesh(std::mt19937& rng, int trial) {
   if (trial % 4 != 0)
     for (double& x : g.tmesh.arc_target) x *= 0.25;
   return g;
+}
+
+// Two paths overlapping partially along an inner horizontal grid line (horizontal arcs are
+// numbered row by row, random_grid_tmesh), the second walked either way; nothing without an
+// inner line of three arcs or more.
+void add_overlapping_pair(GridTMesh& g, std::mt19937& rng) {
+  if (g.rows < 2 || g.columns < 3) return;
+  const int j = 1 + static_cast<int>(rng() % (g.rows - 1));
+  const int s = 1 + static_cast<int>(rng() % (g.columns - 2));  // the second starts at x = s
+  const int e = s + 1 + static_cast<int>(rng() % (g.columns - 1 - s));  // the first ends at e
+  std::vector<int> first, second;
+  for (int i = 0; i < e; ++i) first.push_back(2 * (j * g.columns + i));
+  for (int i = s; i < g.columns; ++i) second.push_back(2 * (j * g.columns + i));
+  if (rng() % 2) {
+    std::reverse(second.begin(), second.end());
+    for (int& h : second) h ^= 1;
+  }
+  g.tmesh.nonzero_paths.push_back(first);
+  g.tmesh.nonzero_paths.push_back(second);
 }
 
 QuantizeOptions trial_options(int trial) {
@@ -128,9 +172,10 @@ int drifting_two_gons(const HalfArcQuantization& h) {
 // validity conditions, and is never worse than Algorithm 2's quantization.
 TEST(HalfArc, OptimumEqualsTheMilpOracleAndNeverLosesToGreedy) {
   std::mt19937 rng(17);
-  int relaxed = 0, better = 0, tied = 0;
+  int relaxed = 0, better = 0, tied = 0, pairs = 0;
   for (int trial = 0; trial < testing::scaled(160); ++trial) {
     GridTMesh g = trial_tmesh(rng, trial);
+    if (trial % 3 == 1) add_overlapping_pair(g, rng);
     const TMesh& t = g.tmesh;
     const TMeshIncidence inc = validate_tmesh(t);
     const QuantizeOptions o = trial_options(trial);
@@ -139,13 +184,19 @@ TEST(HalfArc, OptimumEqualsTheMilpOracleAndNeverLosesToGreedy) {
     const double reorder = trial % 2 ? -1.0 : 0.5 * (trial % 3);
     const HalfArcQuantization h = quantize_half_arcs(t, inc, o, reorder, trial % 4 == 0);
     ASSERT_EQ(h.quantization.status, SolveStatus::Optimal) << "trial " << trial;
-    ASSERT_EQ(check_half_arc_quantization(t, h.relaxed, h.half_arc_length), "")
+    ASSERT_EQ(check_half_arc_quantization(t, h.inflated.two_gons, h.half_arc_length), "")
         << "trial " << trial;
+    // Bounded two-gons are pinned where asked and at an overlapping pair's inner ends.
     std::vector<std::vector<char>> pinned;
-    if (h.keep_crossings)
-      for (const TwoGon& g : h.inflated.two_gons) pinned.push_back(g.crossing);
-    const double oracle = milp_optimum(t, o.cost, o.side_weight, &h.quantization.constraints, 12,
-                                       -1, &h.relaxed, reorder, &pinned);
+    for (const TwoGon& two_gon : h.inflated.two_gons) {
+      pinned.push_back(h.keep_crossings ? two_gon.crossing
+                                        : std::vector<char>(two_gon.left.size() + 1, 0));
+      if (two_gon.paths.size() == 2) pinned.back()[two_gon.left_end] = 1;
+      if (two_gon.paths.size() == 2) pinned.back()[two_gon.right_start] = 1;
+    }
+    const double oracle =
+        milp_optimum(t, o.cost, o.side_weight, &h.quantization.constraints, 12, -1,
+                     &h.inflated.two_gons, &h.inflated.arc_origin, reorder, &pinned);
     ASSERT_TRUE(testing::relatively_close(h.quantization.objective, oracle))
         << "trial " << trial << ": " << h.quantization.objective << " vs CBC " << oracle;
     const TMeshQuantization greedy = quantize_tmesh(t, inc, o);
@@ -156,11 +207,15 @@ TEST(HalfArc, OptimumEqualsTheMilpOracleAndNeverLosesToGreedy) {
       tied += !h.relaxed.empty();
     }
     relaxed += !h.relaxed.empty();
+    for (const TwoGon& two_gon : h.inflated.two_gons) pairs += two_gon.paths.size() == 2;
     better += h.quantization.objective < greedy.objective - 1e-9;
   }
-  std::printf("%d of %d with relaxed paths, %d better than greedy, %d exact ones tied\n", relaxed,
-              testing::scaled(160), better, tied);
+  std::printf(
+      "%d of %d with relaxed paths (%d overlapping pairs), %d better than greedy, %d "
+      "exact ones tied\n",
+      relaxed, testing::scaled(160), pairs, better, tied);
   EXPECT_GT(relaxed, testing::scaled(160) / 3);
+  EXPECT_GT(pairs, testing::scaled(160) / 16);
   EXPECT_GT(better, 0);
 }
 
@@ -175,6 +230,7 @@ TEST(HalfArc, AlignedTwoGonsHoldAnArcQuantizationAlongTheirPaths) {
   const int trials = std::max(40, testing::scaled(120));
   for (int trial = 0; trial < trials; ++trial) {
     GridTMesh g = trial_tmesh(rng, trial);
+    if (trial % 2 == 1) add_overlapping_pair(g, rng);
     const TMesh& t = g.tmesh;
     const TMeshIncidence inc = validate_tmesh(t);
     const QuantizeOptions o = trial_options(trial);
@@ -201,7 +257,8 @@ TEST(HalfArc, AlignedTwoGonsHoldAnArcQuantizationAlongTheirPaths) {
     ASSERT_LE(q.objective, greedy.objective + 1e-9) << "trial " << trial;
     raised += q.objective > exact.objective + 1e-9;
     const std::vector<int64_t> half = half_arc_lengths(t, setup.inflated, q.arc_length);
-    ASSERT_EQ(check_half_arc_quantization(t, setup.relaxed, half), "") << "trial " << trial;
+    ASSERT_EQ(check_half_arc_quantization(t, setup.inflated.two_gons, half), "")
+        << "trial " << trial;
     for (int k : some) {
       const TwoGon& two_gon = setup.inflated.two_gons[k];
       for (size_t i = 0; i < two_gon.left.size(); ++i)
@@ -213,8 +270,9 @@ TEST(HalfArc, AlignedTwoGonsHoldAnArcQuantizationAlongTheirPaths) {
     std::vector<std::vector<char>> pinned;
     for (const TwoGon& two_gon : setup.inflated.two_gons)
       pinned.emplace_back(two_gon.left.size() + 1, 1);
-    const double oracle = milp_optimum(t, o.cost, o.side_weight, &q.constraints, 12, -1,
-                                       &setup.relaxed, 0.0, &pinned);
+    const double oracle =
+        milp_optimum(t, o.cost, o.side_weight, &q.constraints, 12, -1, &setup.inflated.two_gons,
+                     &setup.inflated.arc_origin, 0.0, &pinned);
     ASSERT_TRUE(testing::relatively_close(q.objective, oracle))
         << "trial " << trial << ": " << q.objective << " vs CBC " << oracle;
   }
@@ -238,7 +296,8 @@ TEST(HalfArc, TracedRandomMeshesNeverLoseToGreedy) {
     o.coarse = seed % 4 == 0;
     const HalfArcQuantization h = quantize_half_arcs(t, inc, o);
     ASSERT_EQ(h.quantization.status, SolveStatus::Optimal) << "seed " << seed;
-    ASSERT_EQ(check_half_arc_quantization(t, h.relaxed, h.half_arc_length), "") << "seed " << seed;
+    ASSERT_EQ(check_half_arc_quantization(t, h.inflated.two_gons, h.half_arc_length), "")
+        << "seed " << seed;
     const TMeshQuantization greedy = quantize_tmesh(t, inc, o);
     const double half_arc_value =
         o.coarse ? h.quantization.coarse_objective : h.quantization.objective;
@@ -313,6 +372,7 @@ TEST(HalfArc, DeflationIsAValidArcQuantizationInAnyPathOrder) {
   for (int trial = -1; trial < testing::scaled(150); ++trial) {
     GridTMesh g{traded_junction_grid(), 3, 2};
     if (trial >= 0) g = random_grid_tmesh(rng, 2 + trial % 4, 2 + (trial / 4) % 3, 2 + trial % 6);
+    if (trial % 2 == 1) add_overlapping_pair(g, rng);
     TMesh& t = g.tmesh;
     if (trial >= 0)
       for (double& x : t.arc_target) x *= trial % 2 ? 0.3 : 1.0;
@@ -412,17 +472,18 @@ TEST(HalfArc, CheckNamesTheBrokenCondition) {
   const TMeshIncidence inc = validate_tmesh(t);
   const HalfArcQuantization h = quantize_half_arcs(t, inc, {});
   std::vector<int64_t> H = h.half_arc_length;
-  ASSERT_EQ(check_half_arc_quantization(t, {0}, H), "");
+  const std::vector<TwoGon>& lines = h.inflated.two_gons;
+  ASSERT_EQ(check_half_arc_quantization(t, lines, H), "");
   H[6] += 1;  // the path's left side grows at arc 3, and patch 3's bottom with it
-  EXPECT_EQ(check_half_arc_quantization(t, {0}, H).substr(0, 8), "patch 3:");
+  EXPECT_EQ(check_half_arc_quantization(t, lines, H).substr(0, 8), "patch 3:");
   H[13] += 1;  // patch 3's top (arc 6, on the border) too: the path's sides differ
-  EXPECT_EQ(check_half_arc_quantization(t, {0}, H),
-            "path 0: its sides have lengths " + std::to_string(H[6] + H[8] + H[10]) + " and " +
-                std::to_string(H[7] + H[9] + H[11]));
+  EXPECT_EQ(check_half_arc_quantization(t, lines, H),
+            "the line of path 0: its sides have lengths " + std::to_string(H[6] + H[8] + H[10]) +
+                " and " + std::to_string(H[7] + H[9] + H[11]));
   // Not relaxed, arc 3's half-arcs must be equal.
   EXPECT_EQ(check_half_arc_quantization(t, {}, H).substr(0, 6), "arc 3:");
   H[2 * 9 + 1] = -1;
-  EXPECT_EQ(check_half_arc_quantization(t, {0}, H), "half-arc 19: negative length -1");
+  EXPECT_EQ(check_half_arc_quantization(t, lines, H), "half-arc 19: negative length -1");
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "bimdf/tmesh/half_arc.hpp"
 #include "bimdf/tmesh/quantize.hpp"
 
 namespace bimdf::tmesh::gridsupport {
@@ -96,19 +97,21 @@ inline GridTMesh random_grid_tmesh(std::mt19937& rng, int columns, int rows, int
 // relaxed_weight per unit, with Σ side k = w_(k mod 2) + c_(k−1) + c_k — side k's length is
 // what crosses the patch to side k+2 plus what turns to either neighbour.
 //
-// With `half_arc_paths` (paths of t), the half-arc quantization of §4.3 instead: every arc on
-// one of these paths has a length per half-arc (x_h, each costing half the arc's deviation),
-// sides sum their half-arcs, and along each such path Σ x_h = Σ x_opposite(h) ≥ 1 — whatever
-// `constraints` says. A bound on a cut arc applies to the half-arc its path runs along (the
-// left copy, as in the inflated T-mesh). With reorder_weight ≥ 0 (bounded two-gons), instead
-// of the path's ≥ 1 row: per interior vertex i of the path, the offset Σ_{j ≤ i} (x_h_j −
-// x_opposite(h_j)) = d⁺ − d⁻ with d± ≥ 0 costing reorder_weight each — or 0 where `pinned`
-// (per path of half_arc_paths, per vertex 0..n) says so.
+// With `two_gons` (the lines of an inflation of t, half_arc.hpp), the half-arc quantization
+// of §4.3 instead: every arc on a line has a length per half-arc (x_h, each costing half the
+// arc's deviation), sides sum their half-arcs, and along each line Σ x_h = Σ x_opposite(h);
+// a line of one path has that sum ≥ 1, a line of two overlapping paths the left side's sum to
+// vertex left_end ≥ 1 and the right side's from vertex right_start ≥ 1 — whatever
+// `constraints` says. A bound on a cut arc applies to the half-arc on the line's left (its own
+// id in the inflated T-mesh, < t.num_arcs()) or right (the right copy's id, whose arc is
+// `arc_origin`'s). With reorder_weight ≥ 0 (bounded two-gons), instead of those ≥ 1 rows: per
+// interior vertex i of the line, the offset Σ_{j ≤ i} (x_h_j − x_opposite(h_j)) = d⁺ − d⁻ with
+// d± ≥ 0 costing reorder_weight each — or 0 where `pinned` (per line, per vertex 0..n) says so.
 inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weight,
                            const MinOneConstraints* constraints, int cap,
                            double relaxed_weight = -1,
-                           const std::vector<int>* half_arc_paths = nullptr,
-                           double reorder_weight = -1,
+                           const std::vector<TwoGon>* two_gons = nullptr,
+                           const std::vector<int>* arc_origin = nullptr, double reorder_weight = -1,
                            const std::vector<std::vector<char>>* pinned = nullptr) {
   const bool relaxed = relaxed_weight >= 0;
   // Length columns: one per arc, then one more per cut arc (its odd half-arc's).
@@ -116,9 +119,9 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
   for (int h = 0; h < t.num_half_arcs(); ++h) column[h] = TMesh::arc_of(h);
   std::vector<double> length_weight(t.num_arcs(), 1.0);
   std::vector<double> length_target(t.arc_target);
-  if (half_arc_paths)
-    for (int path : *half_arc_paths)
-      for (int h : t.nonzero_paths[path]) {
+  if (two_gons)
+    for (const TwoGon& g : *two_gons)
+      for (int h : g.left) {
         const int a = TMesh::arc_of(h);
         if (column[2 * a + 1] != a) continue;
         column[2 * a + 1] = static_cast<int>(length_weight.size());
@@ -183,13 +186,18 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
       for (int h : t.patch_sides[p][k]) terms.push_back({column[h], 1});
       add_sum(terms, 'E', 0);
     }
-  std::vector<int> path_half(t.num_arcs(), -1);  // per cut arc: its path's half-arc
-  if (half_arc_paths)
-    for (int path : *half_arc_paths)
-      for (int h : t.nonzero_paths[path]) path_half[TMesh::arc_of(h)] = h;
+  std::vector<int> line_half(t.num_arcs(), -1);  // per cut arc: its line's half-arc
+  if (two_gons)
+    for (const TwoGon& g : *two_gons)
+      for (int h : g.left) line_half[TMesh::arc_of(h)] = h;
   if (constraints) {
-    for (int a : constraints->arcs)
-      add_sum({{path_half[a] >= 0 ? column[path_half[a]] : a, 1}}, 'G', 1);
+    for (int a : constraints->arcs) {
+      if (a >= t.num_arcs()) {  // a right copy
+        add_sum({{column[TMesh::opposite(line_half[arc_origin->at(a)])], 1}}, 'G', 1);
+        continue;
+      }
+      add_sum({{line_half[a] >= 0 ? column[line_half[a]] : a, 1}}, 'G', 1);
+    }
     for (const SideRef& s : constraints->sides) {
       std::vector<std::pair<int, double>> terms;
       for (int h : t.patch_sides[s[0]][s[1]]) terms.push_back({column[h], 1});
@@ -204,15 +212,18 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
   }
   int offsets = 0;  // offset columns d⁺, d⁻ follow all others
   const int first_offset = Cbc_getNumCols(m);
-  if (half_arc_paths)
-    for (size_t r = 0; r < half_arc_paths->size(); ++r) {
-      const int path = (*half_arc_paths)[r];
-      std::vector<std::pair<int, double>> both, one;
-      const std::vector<int>& half_arcs = t.nonzero_paths[path];
+  if (two_gons)
+    for (size_t r = 0; r < two_gons->size(); ++r) {
+      const TwoGon& g = (*two_gons)[r];
+      std::vector<std::pair<int, double>> both, one, left_prefix, right_suffix;
+      const std::vector<int>& half_arcs = g.left;
       for (size_t i = 0; i < half_arcs.size(); ++i) {
         const int h = half_arcs[i];
         both.push_back({column[h], 1}), both.push_back({column[TMesh::opposite(h)], -1});
         one.push_back({column[h], 1});
+        if (static_cast<int>(i) < g.left_end) left_prefix.push_back({column[h], 1});
+        if (g.right_start >= 0 && static_cast<int>(i) >= g.right_start)
+          right_suffix.push_back({column[TMesh::opposite(h)], 1});
         if (reorder_weight < 0 || i + 1 == half_arcs.size()) continue;
         if (pinned && r < pinned->size() && (*pinned)[r].size() > i + 1 && (*pinned)[r][i + 1]) {
           add_sum(both, 'E', 0);  // no drift at a pinned vertex
@@ -226,7 +237,9 @@ inline double milp_optimum(const TMesh& t, DeviationCost cost, double side_weigh
         both.resize(both.size() - 2);
       }
       add_sum(both, 'E', 0);
-      if (reorder_weight < 0) add_sum(one, 'G', 1);
+      if (reorder_weight >= 0) continue;
+      if (g.paths.size() == 1) add_sum(one, 'G', 1);
+      if (g.paths.size() == 2) add_sum(left_prefix, 'G', 1), add_sum(right_suffix, 'G', 1);
     }
   Cbc_solve(m);
   if (Cbc_isProvenInfeasible(m)) return std::nan("");

@@ -19,10 +19,19 @@
 // two sides the smoothing keeps apart, and across whose sharp edge T-junctions should not
 // trade places), (b) is straight at each
 // interior vertex (180° on either side: no patch corner, or two, on each side), (c) shares no
-// arc with another path and (d) no interior vertex with another path's interior. A path failing
-// (c) or (d) would need its two-gon pinned at the shared place, and a pinned two-gon's length is
-// a sum of edges, not one edge (§4.3 leaves overlapping paths to the adaptation, which then
-// cannot keep every path's min-one; we do not relax them instead). Paths of one arc are exact
+// arc with another path and (d) no interior vertex with another path's interior — except that
+// two paths overlapping partially along one line (each reaching past the other's end, sharing
+// arcs with each other only) are relaxed together, as one two-gon along their union. §4.3 stacks
+// the second path's two-gon on the first one's: each path's length is then its own two-gon's,
+// which is the sum of one real side — the outer one. So in the merged two-gon (Appendix A, step
+// 1) the path from the line's tail is measured on the left (the left copies up to its end) and
+// the other on the right (the right copies from its start), each by one network edge: the left
+// copies flow along a chain of nodes into a hub at the first path's end, so that each chain edge
+// carries a prefix sum of the left side, the hub's edge to the right side's hub carries the
+// line's length, and the right copies leave along a chain from a hub at the second path's start
+// (suffix sums). A path crossing another (d) would need its two-gon's length to be a sum of
+// edges, which Bi-MDF cannot bound with one edge; such paths, and three or more paths
+// overlapping, are not relaxed. Paths of one arc are exact
 // without a two-gon (the arc's own lower bound). Every other path keeps the bounds of
 // Algorithm 2 (greedy_min_one_constraints on the whole T-mesh) that cover it, so that any
 // quantization satisfying Algorithm 2's bounds stays feasible: the half-arc optimum is never
@@ -56,7 +65,12 @@ namespace bimdf::tmesh {
 // the patches left of the path (the input's half-arc ids), `right` are the border half-arcs of
 // the right copies (the patches to the right lie on their opposites).
 struct TwoGon {
-  int path = -1;  // index into the input's nonzero_paths
+  // The relaxed paths it holds (indices into the input's nonzero_paths): one, along the whole
+  // line, or two overlapping ones (see above): paths[0] from the line's tail to its vertex
+  // `left_end`, measured on the left, and paths[1] from vertex `right_start` (< left_end) to the
+  // line's head, measured on the right. Alone, −1 both.
+  std::vector<int> paths;
+  int left_end = -1, right_start = -1;
   std::vector<int> left, right;
   // Per vertex of the path (0..n, the ends included as 0): 1 where arcs leave it on both sides
   // — a crossing, which a bounded two-gon can keep in place (HalfArcSetup::keep_crossings).
@@ -82,25 +96,28 @@ struct InflatedTMesh {
 };
 
 // The paths to relax (rules above), as sorted indices into tmesh.nonzero_paths; of identical
-// paths only the first. Deterministic, and independent of the order of the paths.
+// paths only the first; both of an overlapping pair. Deterministic, and independent of the order
+// of the paths.
 std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incidence);
 
 // Cuts the T-mesh open along `paths` (from relaxable_paths; throws std::invalid_argument for a
-// path that breaks its rules). Patch grids and arc chains carry over (a right copy has its
-// arc's chain), so T' validates like the input.
+// path that breaks its rules, or one of an overlapping pair without the other): one two-gon per
+// path alone, in the order given, or per pair, at its first path. Patch grids and arc chains
+// carry over (a right copy has its arc's chain), so T' validates like the input.
 InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& incidence,
                                const std::vector<int>& paths);
 
-// The bounds of Algorithm 2 that the half-arc model keeps (see above), in T's ids: those of
+// The bounds of Algorithm 2 that the half-arc model keeps (see above), in T''s ids: those of
 // greedy_min_one_constraints(tmesh) covering a path of two or more arcs that is not relaxed
-// or whose two-gon has no edge carrying its length (`bounded[i]` for relaxed[i]: a bounded or
-// aligned two-gon; empty: none), plus a min-one bound on the arc of every one-arc path. An arc
-// bound on a cut arc — both of whose copies ≥ 1 would undo the cut — becomes bounds on the sides
-// holding its two copies where it covers a path that is not relaxed (it implies that path through
-// those sides), and a bound on its left copy (the arc's own id in T') where it covers a relaxed one
-// (whose left copies sum to its length).
+// or whose two-gon has no edges carrying its paths' lengths (`bounded`, per two-gon of
+// `inflated`: a bounded or aligned one; empty: none), plus a min-one bound on the arc of every
+// one-arc path. An arc bound on a cut arc — both of whose copies ≥ 1 would undo the cut —
+// becomes bounds on the sides holding its two copies where it covers a path that is not relaxed
+// (it implies that path through those sides), and a bound on the copy on the side a relaxed
+// path is measured on where it covers one (its left copy, the arc's own id, for a path alone,
+// whose two sides are equal).
 MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
-                                  const std::vector<int>& relaxed,
+                                  const InflatedTMesh& inflated,
                                   const std::vector<char>& bounded = {});
 
 // Per input half-arc, its length under a quantization of T' (`arc_length`, one per T' arc):
@@ -110,11 +127,12 @@ std::vector<int64_t> half_arc_lengths(const TMesh& tmesh, const InflatedTMesh& i
 
 // Checks a half-arc quantization of the input (one length per half-arc; a border half-arc's is
 // ignored), independently of any model: every length ≥ 0; the opposite half-arcs of every arc
-// off the relaxed paths equal; opposite sides of every patch equal (summed over the half-arcs
-// on them); along every relaxed path both sides equal and ≥ 1; every other path ≥ 1 (its
-// arcs' lengths summed, their half-arcs being equal). Returns "" when valid, else the first
-// violation ("path 3: its sides have lengths 4 and 5").
-std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<int>& relaxed,
+// off the two-gons' lines equal; opposite sides of every patch equal (summed over the half-arcs
+// on them); along every line both sides equal; every relaxed path ≥ 1 on the side it is measured
+// on (a path alone: either); every other path ≥ 1 (its arcs' lengths summed, their half-arcs
+// being equal; a path with the same arcs as a relaxed one is that path). Returns "" when valid,
+// else the first violation ("the line of path 3: its sides have lengths 4 and 5").
+std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<TwoGon>& two_gons,
                                         const std::vector<int64_t>& half_arc_length);
 
 // The half-arc model of a T-mesh, before any solve: every relaxable path made a two-gon, T'
@@ -123,7 +141,9 @@ std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<in
 // `reorder_weight` < 0: exact two-gons (Fig. 12a). ≥ 0: bounded ones (Fig. 12b): every unit by
 // which the two sides of a path drift apart at one of its vertices costs this much (0: free,
 // large: an arc quantization), and every path keeps Algorithm 2's bounds instead of its
-// two-gon's min-one — T-junctions trade places only where that pays for itself. With
+// two-gon's min-one — T-junctions trade places only where that pays for itself. Nor does it
+// drift at the inner ends of an overlapping pair (so both paths' sides sum equally, and
+// Algorithm 2's bounds on either side hold them). With
 // keep_crossings, a bounded two-gon does not drift at a crossing (a path vertex with arcs on
 // both sides): splitting one into two T-junctions breaks a straight line of the layout in two.
 // Measured (docs/benchmarks.md), that keeps every coarse base complex near greedy's, where

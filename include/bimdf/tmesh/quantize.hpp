@@ -114,6 +114,12 @@ struct ArcModelOptions {
   // quantization along that path: no drift, no min-one of its own — give it bounds), whatever
   // the weight; exact or bounded.
   std::vector<char> two_gon_aligned;
+  // Optional, per two-gon: {e, s} for two overlapping paths held by one exact two-gon
+  // (half_arc.hpp; vertex positions 0..n along the path): the first, from the path's tail to
+  // its vertex e, measured by the second side's half-arcs up to e (the left copies), the second,
+  // from vertex s to the head, by the first side's from s (the right copies); 0 < s < e < n.
+  // Each sum is one edge of lower bound 1. {−1, −1}: one path, the whole length.
+  std::vector<std::array<int, 2>> two_gon_split;
   // Bounded two-gons whose drift cost only breaks ties (the exact model's tie-break,
   // quantize_inflated): the objectives reported leave it out.
   bool two_gon_drift_tie_break = false;
