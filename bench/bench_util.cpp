@@ -46,6 +46,28 @@ Run run_cli(const std::string& cli, const std::vector<std::string>& args) {
   return {nlohmann::json::parse(text), usage.ru_maxrss / 1024.0};
 }
 
+void for_each_remeshed_layout(
+    const std::string& cli, const std::string& dir,
+    const std::function<void(const std::string&, const std::string&, const std::string&)>& visit) {
+  namespace fs = std::filesystem;
+  const std::vector<LayoutReference> refs = read_layout_references(dir);
+  const fs::path scratch =
+      fs::temp_directory_path() / ("bimdf_bench_" + std::to_string(::getpid()));
+  fs::create_directories(scratch);
+  const std::string out = (scratch / "out.obj").string();
+  for (const LayoutReference& ref : refs) {
+    const std::string obj = (fs::path(dir) / ref.mesh / (ref.mesh + ".obj")).string();
+    std::string in = (scratch / (ref.mesh + ".quads.obj")).string();
+    try {
+      run_cli(cli, {"remesh", "--json", "-o", in, obj});
+    } catch (const std::exception&) {
+      in.clear();
+    }
+    visit(ref.mesh, in, out);
+  }
+  fs::remove_all(scratch);
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();

@@ -2,6 +2,7 @@
 // number formatting, shell output, and replacing a generated section of a Markdown file.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -36,6 +37,13 @@ struct LayoutReference {
   int noalign_quads = 0, align_quads = 0;
 };
 std::vector<LayoutReference> read_layout_references(const std::string& dir);
+
+// Remeshes every layout of the shared layouts folder `dir` with `bimdf remesh` into a scratch
+// folder (removed afterwards) and calls visit(layout name, the remeshed OBJ — "" if remesh
+// failed —, a scratch path for outputs), in expected.tsv's order.
+void for_each_remeshed_layout(
+    const std::string& cli, const std::string& dir,
+    const std::function<void(const std::string&, const std::string&, const std::string&)>& visit);
 
 // Fixed-point text, "–" for NaN.
 std::string fmt(double v, int precision = 3);

@@ -23,6 +23,7 @@
 #include "bimdf/generate.hpp"
 #include "bimdf/io.hpp"
 #include "generality_bench.hpp"
+#include "half_arc_bench.hpp"
 #include "layout_bench.hpp"
 #include "markdown_table.hpp"
 #include "milp_model.hpp"
@@ -145,6 +146,11 @@ int main(int argc, char** argv) {
   app.add_flag("--only-requantize", only_requantize,
                "Run just the requantize benchmark on the --layouts folder (replaces the "
                "<!-- requantize:begin/end --> section)");
+  bool only_half_arc = false;
+  app.add_flag("--only-half-arc", only_half_arc,
+               "Run just the half-arc benchmark on the --layouts folder: `requantize --coarse` at "
+               "10°-45° with --half-arc off / exact / bounded (replaces the "
+               "<!-- half-arc:begin/end --> section)");
   bool only_generality = false;
   app.add_flag("--only-generality", only_generality,
                "Run just the generality benchmark: matchings, directed min-cost flows and "
@@ -165,6 +171,13 @@ int main(int argc, char** argv) {
       return 2;
     }
     return write_section("requantize", benchmark_requantize(cli, layouts_dir, repeats)) ? 0 : 2;
+  }
+  if (only_half_arc) {
+    if (layouts_dir.empty()) {
+      std::cerr << "--only-half-arc needs --layouts\n";
+      return 2;
+    }
+    return write_section("half-arc", benchmark_half_arc(cli, layouts_dir, repeats)) ? 0 : 2;
   }
   if (only_generality) return write_section("generality", benchmark_generality(repeats)) ? 0 : 2;
   if (only_layouts) {

@@ -1,7 +1,4 @@
 #include "requantize_bench.hpp"
-
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -43,10 +40,6 @@ std::string failed_row(const std::string& mesh, const std::string& setting) {
 }  // namespace
 
 std::string benchmark_requantize(const std::string& cli, const std::string& dir, int repeats) {
-  const std::vector<LayoutReference> refs = read_layout_references(dir);
-  const fs::path scratch =
-      fs::temp_directory_path() / ("bimdf_bench_requantize_" + std::to_string(::getpid()));
-  fs::create_directories(scratch);
   const std::vector<Setting> settings = {
       {"scale 0.5", {"--scale", "0.5"}, 0.5, false},
       {"scale 1", {"--scale", "1"}, 1, false},
@@ -75,66 +68,62 @@ std::string benchmark_requantize(const std::string& cli, const std::string& dir,
   int degenerate_total = 0;
   double worst_quads = 0;
   std::vector<double> bc_reduction;
-  for (const LayoutReference& ref : refs) {
-    const std::string obj = (fs::path(dir) / ref.mesh / (ref.mesh + ".obj")).string();
-    const std::string in = (scratch / (ref.mesh + ".quads.obj")).string();
-    const std::string out = (scratch / "out.obj").string();
-    try {
-      run_cli(cli, {"remesh", "--json", "-o", in, obj});
-    } catch (const std::exception& e) {
-      md << failed_row(ref.mesh, "remesh");
-      ++failures;
-      continue;
-    }
-    for (const Setting& s : settings) {
-      std::vector<std::string> args = {"requantize", "--json", "-o", out};
-      args.insert(args.end(), s.args.begin(), s.args.end());
-      args.push_back(in);
-      ++runs;
-      MedianRun run;
-      try {
-        run = median_run(cli, args, repeats);
-      } catch (const std::exception& e) {
-        md << failed_row(ref.mesh, s.name);
-        ++failures;
-        continue;
-      }
-      const json& j = run.output;
-      const json& m = j["metrics"];
-      const json& t = j["time"];
-      const int quads_in = j["quads_in"].get<int>(), quads = j["quads"].get<int>();
-      const double target = quads_in / (s.scale * s.scale);
-      const double diff = (quads - target) / target;
-      if (!s.coarse) worst_quads = std::max(worst_quads, std::fabs(diff));
-      const bool same_singularities = j["singularities_in"] == j["singularities_out"];
-      singularity_changes += !same_singularities;
-      inverted_total += m["inverted"].get<int>();
-      degenerate_total += m["degenerate"].get<int>();
-      const int bc_in = j["base_complex_in"].get<int>(), bc_out = j["base_complex_out"].get<int>();
-      if (s.coarse) {
-        bc_reduction.push_back(1 - double(bc_out) / bc_in);
-        bc_larger += bc_out > bc_in;
-      }
-      const int sing_in =
-          count_all(j["singularities_in"]["inside"]) + count_all(j["singularities_in"]["border"]);
-      const int sing_out =
-          count_all(j["singularities_out"]["inside"]) + count_all(j["singularities_out"]["border"]);
-      md << "| " << ref.mesh << " | " << s.name << " | " << j["status"].get<std::string>() << " | "
-         << j["tmesh_patches"] << " / " << j["tmesh_arcs"] << " | " << j["zero_arcs"] << " | "
-         << quads_in << " | " << quads << " | " << (s.coarse ? "" : (diff >= 0 ? "+" : ""))
-         << (s.coarse ? std::string("–") : fmt(100 * diff, 1) + "%") << " | " << sing_in << " → "
-         << sing_out << (same_singularities ? " =" : " ≠") << " | " << bc_in << " → " << bc_out
-         << " | " << fmt(m["scaled_jacobian"]["min"].get<double>()) << " | "
-         << fmt(m["scaled_jacobian"]["mean"].get<double>()) << " | "
-         << fmt(m["scaled_jacobian"]["p5"].get<double>()) << " | " << m["inverted"] << " | "
-         << m["degenerate"] << " | " << fmt(1e3 * t["trace_s"].get<double>(), 1) << " | "
-         << fmt(1e3 * (t["model_s"].get<double>() + t["solve_s"].get<double>()), 1) << " | "
-         << fmt(1e3 * t["collapse_s"].get<double>(), 1) << " | "
-         << fmt(1e3 * t["smoothing_s"].get<double>(), 1) << " | " << fmt(1e3 * run.seconds, 1)
-         << " |\n";
-    }
-  }
-  fs::remove_all(scratch);
+  for_each_remeshed_layout(
+      cli, dir, [&](const std::string& mesh, const std::string& in, const std::string& out) {
+        if (in.empty()) {
+          md << failed_row(mesh, "remesh");
+          ++failures;
+          return;
+        }
+        for (const Setting& s : settings) {
+          std::vector<std::string> args = {"requantize", "--json", "-o", out};
+          args.insert(args.end(), s.args.begin(), s.args.end());
+          args.push_back(in);
+          ++runs;
+          MedianRun run;
+          try {
+            run = median_run(cli, args, repeats);
+          } catch (const std::exception& e) {
+            md << failed_row(mesh, s.name);
+            ++failures;
+            continue;
+          }
+          const json& j = run.output;
+          const json& m = j["metrics"];
+          const json& t = j["time"];
+          const int quads_in = j["quads_in"].get<int>(), quads = j["quads"].get<int>();
+          const double target = quads_in / (s.scale * s.scale);
+          const double diff = (quads - target) / target;
+          if (!s.coarse) worst_quads = std::max(worst_quads, std::fabs(diff));
+          const bool same_singularities = j["singularities_in"] == j["singularities_out"];
+          singularity_changes += !same_singularities;
+          inverted_total += m["inverted"].get<int>();
+          degenerate_total += m["degenerate"].get<int>();
+          const int bc_in = j["base_complex_in"].get<int>(),
+                    bc_out = j["base_complex_out"].get<int>();
+          if (s.coarse) {
+            bc_reduction.push_back(1 - double(bc_out) / bc_in);
+            bc_larger += bc_out > bc_in;
+          }
+          const int sing_in = count_all(j["singularities_in"]["inside"]) +
+                              count_all(j["singularities_in"]["border"]);
+          const int sing_out = count_all(j["singularities_out"]["inside"]) +
+                               count_all(j["singularities_out"]["border"]);
+          md << "| " << mesh << " | " << s.name << " | " << j["status"].get<std::string>() << " | "
+             << j["tmesh_patches"] << " / " << j["tmesh_arcs"] << " | " << j["zero_arcs"] << " | "
+             << quads_in << " | " << quads << " | " << (s.coarse ? "" : (diff >= 0 ? "+" : ""))
+             << (s.coarse ? std::string("–") : fmt(100 * diff, 1) + "%") << " | " << sing_in
+             << " → " << sing_out << (same_singularities ? " =" : " ≠") << " | " << bc_in << " → "
+             << bc_out << " | " << fmt(m["scaled_jacobian"]["min"].get<double>()) << " | "
+             << fmt(m["scaled_jacobian"]["mean"].get<double>()) << " | "
+             << fmt(m["scaled_jacobian"]["p5"].get<double>()) << " | " << m["inverted"] << " | "
+             << m["degenerate"] << " | " << fmt(1e3 * t["trace_s"].get<double>(), 1) << " | "
+             << fmt(1e3 * (t["model_s"].get<double>() + t["solve_s"].get<double>()), 1) << " | "
+             << fmt(1e3 * t["collapse_s"].get<double>(), 1) << " | "
+             << fmt(1e3 * t["smoothing_s"].get<double>(), 1) << " | " << fmt(1e3 * run.seconds, 1)
+             << " |\n";
+        }
+      });
   std::sort(bc_reduction.begin(), bc_reduction.end());
   md << "\n"
      << runs << " runs, " << failures << " failed; largest quad-count deviation from "
