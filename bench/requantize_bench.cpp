@@ -1,4 +1,5 @@
 #include "requantize_bench.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
