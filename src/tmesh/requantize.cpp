@@ -239,6 +239,17 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     if (!split && !refit) break;
     smoothed = r;
     smoothed_bad = bad;
+    // Half-arc: before fitted lengths grow the base complex, every two-gon held to arcs — the
+    // half-arc optimum's other choices may be what stretched those quads.
+    if (refit && r.half_arc && aligned_rounds < options.max_split_repairs) {
+      std::vector<int> all(r.half_arc->inflated.two_gons.size());
+      for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+      if (align_two_gons(*r.half_arc, r.traced.tmesh, r.incidence, all) > 0) {
+        ++aligned_rounds;
+        ++r.repair_rounds;
+        continue;
+      }
+    }
     if (split) quantize.extra_constraints = std::move(bounds);
     if (refit) quantize.coarse_uniform = false;
     ++smoothed_rounds;

@@ -134,7 +134,11 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 // term for drift). Those two-gons are aligned (align_two_gons: an arc quantization along their
 // paths, with Algorithm 2's bounds) and the T-mesh quantized again — at most max_split_repairs
 // times after smoothing, and kept only if it smooths better, as a split is; on collapse
-// failures until nothing is left to align.
+// failures until nothing is left to align. Where no two-gon runs along those quads and no split
+// reaches them, every two-gon is aligned before uniform coarse lengths would be refitted (the
+// half-arc optimum's other choices may be what stretched them; all aligned, the model is
+// Algorithm 2's but for exact one-arc paths).
+// With half_arc and uniform coarse lengths, refit_uniform therefore acts only once all are aligned.
 // `options.trace` is not used. Throws CollapseError if the quantized T-mesh does not collapse into
 // a conforming mesh (see collapse.hpp) — with half_arc, only if the arc quantization it then
 // falls back to does not either (RequantizeResult::half_arc_fallback).
