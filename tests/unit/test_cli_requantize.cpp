@@ -307,12 +307,13 @@ TEST_F(Requantize, CoarseLayoutsKeepEverySingularity) {
 // before repairs, the same T-mesh at the same targets (--compare-greedy) — an objective no
 // worse than greedy's.
 TEST_F(Requantize, HalfArcKeepsEverySingularity) {
-  int smaller = 0, relaxed = 0, better = 0;
+  int smaller = 0, relaxed = 0, better = 0, aligned = 0;
   for (uint64_t seed = 0; seed < 12; ++seed)
     for (const char* mode : {"exact", "bounded"})
       for (const char* args : {"--coarse --max-angle 20", "--coarse --max-angle 45", "--scale 2"}) {
         const std::string where = "seed " + std::to_string(seed) + ", " + mode + ", " + args;
         const json greedy = requantize(test::random_quad_mesh(seed), args);
+        const QuadMeshMetrics greedy_mesh = measure_quad_mesh(output());
         const json j = requantize(test::random_quad_mesh(seed),
                                   std::string(args) + " --compare-greedy --half-arc " + mode);
         ASSERT_EQ(j.value("status", ""), "optimal") << where;
@@ -320,6 +321,9 @@ TEST_F(Requantize, HalfArcKeepsEverySingularity) {
         EXPECT_EQ(j["singularities_out"], j["singularities_in"]) << where;
         const QuadMeshMetrics m = measure_quad_mesh(output());
         EXPECT_TRUE(m.manifold()) << where;
+        // The repairs align two-gons where the re-embedding leaves quads inverted.
+        EXPECT_LE(m.inverted, greedy_mesh.inverted) << where;
+        aligned += j["aligned_two_gons"].get<int>() > 0;
         if (j.contains("half_arc_fallback")) continue;
         relaxed += j["half_arc_paths"].get<int>() > 0;
         EXPECT_GE(j["adapted_arcs"].get<int>(), 1) << where;
@@ -331,7 +335,8 @@ TEST_F(Requantize, HalfArcKeepsEverySingularity) {
         smaller += j["base_complex_out"].get<int>() < greedy["base_complex_out"].get<int>();
       }
   std::cout << relaxed << " runs relaxed paths; " << better << " objectives better than greedy's; "
-            << smaller << " coarse layouts smaller than greedy's\n";
+            << smaller << " coarse layouts smaller than greedy's; " << aligned
+            << " aligned two-gons\n";
   EXPECT_GT(relaxed, 30);
   EXPECT_GT(better, 5);
   EXPECT_GT(smaller, 0);
