@@ -260,8 +260,14 @@ int run_requantize(const RequantizeCommandOptions& o) {
     // The same problem both ways, before repairs (whose bounds differ between the models).
     tmesh::QuantizeOptions plain = ro.quantize;
     const tmesh::TMeshQuantization greedy = tmesh::quantize_tmesh(tm, r.incidence, plain);
-    // The cut T-mesh the run made, at the same targets (its arcs' are the input's).
-    const tmesh::TMeshQuantization half = tmesh::quantize_inflated(*r.half_arc, plain);
+    // The cut T-mesh the run made, at the same targets (its arcs' are the input's), with no
+    // two-gon aligned by the repairs.
+    tmesh::HalfArcSetup unrepaired = *r.half_arc;
+    unrepaired.aligned.assign(unrepaired.aligned.size(), 0);
+    unrepaired.bounds = unrepaired.reorder_weight >= 0
+                            ? unrepaired.greedy_bounds
+                            : tmesh::half_arc_bounds(tm, r.incidence, unrepaired.inflated);
+    const tmesh::TMeshQuantization half = tmesh::quantize_inflated(unrepaired, plain);
     const bool coarse = ro.quantize.coarse;
     const double g = coarse ? greedy.coarse_objective : greedy.objective;
     const double h = coarse ? half.coarse_objective : half.objective;

@@ -124,13 +124,21 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   TMesh& tm = r.half_arc ? r.half_arc->inflated.tmesh : r.traced.tmesh;
   const TMeshIncidence& cut_incidence = r.half_arc ? r.half_arc->incidence : r.incidence;
   const TMeshIncidence& incidence = r.half_arc ? glued : r.incidence;
-  // Half-arc repair: aligns the two-gons along `patches` (those not aligned yet); true if any.
-  const auto align_along = [&](const std::vector<int>& patches) {
+  // Half-arc repair: the two-gons along `patches` (all: every two-gon) not aligned yet.
+  const auto unaligned = [&](const std::vector<int>& patches, bool all) {
     std::vector<int> two_gons;
+    if (!r.half_arc) return two_gons;
     for (int p : patches)
       if (p >= 0 && p < static_cast<int>(two_gons_at.size()))
-        two_gons.insert(two_gons.end(), two_gons_at[p].begin(), two_gons_at[p].end());
-    return r.half_arc && align_two_gons(*r.half_arc, r.traced.tmesh, r.incidence, two_gons) > 0;
+        for (int k : two_gons_at[p])
+          if (!r.half_arc->aligned[k]) two_gons.push_back(k);
+    for (int k = 0; all && k < static_cast<int>(r.half_arc->aligned.size()); ++k)
+      if (!r.half_arc->aligned[k]) two_gons.push_back(k);
+    return two_gons;
+  };
+  const auto align = [&](const std::vector<int>& two_gons) {
+    align_two_gons(*r.half_arc, r.traced.tmesh, r.incidence, two_gons);
+    ++r.repair_rounds;
   };
   const bool on_mesh = mesh && !tm.patch_grid.empty();
   QuantizeOptions quantize = options.quantize;
@@ -146,7 +154,9 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   // conflict with arcs fixed to 0) or smooths no better (the split quad's halves can stay
   // inverted, or turn others over).
   std::optional<RequantizeResult> smoothed;
+  SmoothedQuads smoothed_left;
   int smoothed_bad = 0, smoothed_rounds = 0, aligned_rounds = 0;
+  bool aligning = false;  // the last repair aligned two-gons
   const auto restore_smoothed = [&] {
     const double quantize_s = r.time_quantize_s, collapse_s = r.time_collapse_s,
                  smoothing_s = r.time_smoothing_s;
@@ -178,8 +188,8 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       if (!r.half_arc) throw;
       // Drift the zips cannot close (two T-mesh vertices zipped into an interior vertex of two
       // quads, say): hold the two-gons there to the arc quantization and solve again.
-      if (align_along(e.patches())) {
-        ++r.repair_rounds;
+      if (const std::vector<int> two_gons = unaligned(e.patches(), false); !two_gons.empty()) {
+        align(two_gons);
         continue;
       }
       // The separation repairs act on a collapse that succeeded; a half-arc quantization that
@@ -205,26 +215,36 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     }
     r.repair_constraints = quantize.extra_constraints;
     if (!on_mesh) break;
-    const SmoothedQuads left =
+    SmoothedQuads left =
         smooth_requantized(*mesh, tm, incidence, r.traced.feature_edges, r.traced.feature_corners,
                            r.collapsed, options.smoothing, more_charts);
     r.time_smoothing_s += t.lap();
-    const int bad = left.inverted + left.degenerate;
+    int bad = left.inverted + left.degenerate;
     if (smoothed && bad >= smoothed_bad) {
       restore_smoothed();
-      break;
+      if (!aligning) break;
+      // Aligning did not help there: no more of it; a split may still.
+      left = smoothed_left;
+      bad = smoothed_bad;
+      aligned_rounds = options.max_split_repairs;
     }
+    aligning = false;
+    const auto keep_smoothed = [&] {
+      smoothed = r;
+      smoothed_left = left;
+      smoothed_bad = bad;
+    };
     // Half-arc: quads smoothing did not right (inverted or degenerate) where the re-embedding
     // could not follow the drift of a two-gon along them: align those two-gons and solve again.
     if (r.half_arc && aligned_rounds < options.max_split_repairs) {
       std::vector<int> patches;
       for (const std::vector<int>* quads : {&left.to_split, &left.degenerate_quads})
         for (int f : *quads) patches.push_back(r.collapsed.mesh.quad_patch[f]);
-      if (align_along(patches)) {
-        smoothed = r;
-        smoothed_bad = bad;
+      if (const std::vector<int> two_gons = unaligned(patches, false); !two_gons.empty()) {
+        keep_smoothed();
+        align(two_gons);
         ++aligned_rounds;
-        ++r.repair_rounds;
+        aligning = true;
         continue;
       }
     }
@@ -237,16 +257,14 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
         add_quad_split_bounds(tm, r.quantization.arc_length, r.collapsed, left.to_split, bounds);
     const bool refit = !split && options.refit_uniform && quantize.coarse_uniform;
     if (!split && !refit) break;
-    smoothed = r;
-    smoothed_bad = bad;
+    keep_smoothed();
     // Half-arc: before fitted lengths grow the base complex, every two-gon held to arcs — the
     // half-arc optimum's other choices may be what stretched those quads.
     if (refit && r.half_arc && aligned_rounds < options.max_split_repairs) {
-      std::vector<int> all(r.half_arc->inflated.two_gons.size());
-      for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-      if (align_two_gons(*r.half_arc, r.traced.tmesh, r.incidence, all) > 0) {
+      if (const std::vector<int> two_gons = unaligned({}, true); !two_gons.empty()) {
+        align(two_gons);
         ++aligned_rounds;
-        ++r.repair_rounds;
+        aligning = true;
         continue;
       }
     }
