@@ -95,30 +95,28 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
   auto* half_arc =
       cmd->add_option("--half-arc", o.half_arc,
                       "Half-arc quantization (paper §4.3): the two sides of every non-zero path "
-                      "that crosses and overlaps no other are quantized separately, so that "
-                      "T-junctions on opposite sides of it may trade places. `exact`: the path's "
-                      "own length is kept ≥ 1 (the other paths keep Algorithm 2's bounds); "
-                      "`bounded`: every path keeps Algorithm 2's bounds and each unit by which "
-                      "the two sides drift apart at a vertex costs --reorder-weight; `off`: "
-                      "arcs only")
-          ->default_val("off")
-          ->check(CLI::IsMember({"exact", "bounded", "off"}))
+                      "that crosses no other (alone, or overlapping one other along its line) "
+                      "are quantized separately, so that T-junctions on opposite sides of it may "
+                      "trade places. `exact`: the path's own length is kept ≥ 1 (the other paths "
+                      "keep Algorithm 2's bounds); `bounded`: every path keeps Algorithm 2's "
+                      "bounds and each unit by which the two sides drift apart at a vertex costs "
+                      "--reorder-weight; `off`: arcs only; `auto`: bounded with --coarse, else off "
+                      "(measured in docs/benchmarks.md)")
+          ->default_val("auto")
+          ->check(CLI::IsMember({"exact", "bounded", "off", "auto"}))
           ->excludes(relaxed);
   cmd->add_option("--reorder-weight", o.reorder_weight,
-                  "With --half-arc bounded: the cost of each unit of drift between a path's two "
-                  "sides at one of its vertices (0: free; large: arcs only)")
+                  "With bounded half-arc quantization: the cost of each unit of drift between a "
+                  "path's two sides at one of its vertices (0: free; large: arcs only)")
       ->default_val(1.0)
-      ->check(CLI::NonNegativeNumber)
-      ->needs(half_arc);
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--compare-greedy", o.compare_greedy,
-                "With --half-arc: also solve the same T-mesh at the same targets with "
-                "Algorithm 2's bounds, and report both objectives before any repair "
-                "(compare_greedy: greedy, half_arc)")
-      ->needs(half_arc);
+                "With half-arc quantization: also solve the same T-mesh at the same targets "
+                "with Algorithm 2's bounds, and report both objectives before any repair "
+                "(compare_greedy: greedy, half_arc)");
   cmd->add_flag("--keep-crossings", o.keep_crossings,
-                "With --half-arc bounded: no drift where a path crosses another line (only "
-                "T-junctions trade places; straight lines of the layout stay straight)")
-      ->needs(half_arc);
+                "With bounded half-arc quantization: no drift where a path crosses another line "
+                "(only T-junctions trade places; straight lines of the layout stay straight)");
   cmd->add_option("--max-angle", o.max_angle,
                   "Trace the angle-bounded extended motorcycle graph (Lyon et al. 2021): "
                   "separatrices may deviate from the input's grid lines by at most this many "
@@ -178,11 +176,20 @@ int run_requantize(const RequantizeCommandOptions& o) {
   ro.quantize.coarse_uniform = o.coarse_lengths != "fitted";
   ro.refit_uniform = o.coarse_lengths == "uniform";
   ro.quantize.relaxed = o.relaxed;
-  ro.half_arc = o.half_arc != "off";
-  ro.reorder_weight = o.half_arc == "bounded" ? o.reorder_weight : -1;
+  const std::string half_arc = o.half_arc != "auto"     ? o.half_arc
+                               : o.coarse && !o.relaxed ? "bounded"
+                                                        : "off";
+  ro.half_arc = half_arc != "off";
+  ro.reorder_weight = half_arc == "bounded" ? o.reorder_weight : -1;
   ro.keep_crossings = o.keep_crossings;
-  if ((o.keep_crossings || o.reorder_weight != 1) && o.half_arc != "bounded")
-    throw UsageError{"--reorder-weight and --keep-crossings need --half-arc bounded"};
+  if ((o.keep_crossings || o.reorder_weight != 1) && half_arc != "bounded")
+    throw UsageError{
+        "--reorder-weight and --keep-crossings need bounded half-arc quantization "
+        "(--half-arc bounded, or --coarse)"};
+  if (o.compare_greedy && half_arc == "off")
+    throw UsageError{
+        "--compare-greedy needs half-arc quantization (--half-arc exact|bounded, or "
+        "--coarse)"};
   ro.quantize.relaxed_weight = o.relaxed_weight;
   ro.quantize.threads = o.threads;
   ro.smoothing = o.smoothing;
@@ -255,7 +262,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
   j["repair_rounds"] = r.repair_rounds;
   j["repair_constraints"] = r.repair_constraints.size();
   j["zero_arcs"] = q.zero_arcs;
-  j["half_arc"] = o.half_arc;
+  j["half_arc"] = ro.half_arc ? (ro.reorder_weight < 0 ? "exact" : "bounded") : "off";
   if (o.compare_greedy && r.half_arc) {
     // The same problem both ways, before repairs (whose bounds differ between the models).
     tmesh::QuantizeOptions plain = ro.quantize;

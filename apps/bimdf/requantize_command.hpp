@@ -24,10 +24,10 @@ struct RequantizeCommandOptions {
   std::string cost = "quadratic";
   bool coarse = false;
   std::string coarse_lengths = "uniform";
-  std::string half_arc = "off";  // --half-arc exact|bounded|off
-  double reorder_weight = 1;     // --reorder-weight, with --half-arc bounded
-  bool keep_crossings = false;   // --keep-crossings, with --half-arc bounded
-  bool compare_greedy = false;   // --compare-greedy
+  std::string half_arc = "auto";  // --half-arc exact|bounded|off|auto (resolved in run)
+  double reorder_weight = 1;      // --reorder-weight, with --half-arc bounded
+  bool keep_crossings = false;    // --keep-crossings, with --half-arc bounded
+  bool compare_greedy = false;    // --compare-greedy
   double max_angle = -1;  // < 0: not given (--coarse then uses tmesh::kDefaultCoarseMaxAngle)
   int threads = 1;
   bool relaxed = false;       // --relaxed: irregular quad patches allowed at a cost

@@ -511,6 +511,16 @@ TEST_F(Requantize, BadInput) {
   r = run("requantize " + grid + " -o " + path("out.obj") + " --half-arc exact --relaxed");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("excludes"), std::string::npos) << r.err;
+  r = run("requantize " + grid + " -o " + path("out.obj") + " --reorder-weight 2");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "error: --reorder-weight and --keep-crossings need bounded half-arc quantization "
+            "(--half-arc bounded, or --coarse)\n");
+  r = run("requantize " + grid + " -o " + path("out.obj") + " --compare-greedy");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "error: --compare-greedy needs half-arc quantization (--half-arc exact|bounded, or "
+            "--coarse)\n");
   EXPECT_FALSE(fs::exists(path("out.obj")));
 }
 
