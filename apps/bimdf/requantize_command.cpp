@@ -176,11 +176,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
   ro.quantize.coarse_uniform = o.coarse_lengths != "fitted";
   ro.refit_uniform = o.coarse_lengths == "uniform";
   ro.quantize.relaxed = o.relaxed;
-  const std::string half_arc = o.half_arc != "auto"     ? o.half_arc
-                               : o.coarse && !o.relaxed ? "bounded"
-                                                        : "off";
-  ro.half_arc = half_arc != "off";
-  ro.reorder_weight = half_arc == "bounded" ? o.reorder_weight : -1;
+  const std::string half_arc = tmesh::set_half_arc_mode(ro, o.half_arc, o.reorder_weight);
   ro.keep_crossings = o.keep_crossings;
   if ((o.keep_crossings || o.reorder_weight != 1) && half_arc != "bounded")
     throw UsageError{
@@ -262,7 +258,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
   j["repair_rounds"] = r.repair_rounds;
   j["repair_constraints"] = r.repair_constraints.size();
   j["zero_arcs"] = q.zero_arcs;
-  j["half_arc"] = ro.half_arc ? (ro.reorder_weight < 0 ? "exact" : "bounded") : "off";
+  j["half_arc"] = half_arc;
   if (o.compare_greedy && r.half_arc) {
     // The same problem both ways, before repairs (whose bounds differ between the models).
     tmesh::QuantizeOptions plain = ro.quantize;

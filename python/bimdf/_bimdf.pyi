@@ -169,6 +169,9 @@ def requantize(
     smooth_damping: float = 0.5,
     quality_rounds: int = 5,
     threads: int = 1,
+    half_arc: str = "auto",
+    reorder_weight: float = 1.0,
+    keep_crossings: bool = False,
 ) -> Mesh: ...
 def metrics(
     V: ArrayLike,

@@ -214,7 +214,8 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
                      std::optional<double> max_angle, bool relaxed, double relaxed_weight,
                      double sharp_angle, const std::string& cost, const std::string& coarse_lengths,
                      bool calibrate, int smooth_iterations, double smooth_damping,
-                     int quality_rounds, int threads) {
+                     int quality_rounds, int threads, const std::string& half_arc,
+                     double reorder_weight, bool keep_crossings) {
   const auto start = std::chrono::steady_clock::now();
   const QuadMesh mesh = quad_mesh_from_python(V, F);
   if (int(scale != 1) + int(bool(edge_length)) + int(bool(target_faces)) > 1)
@@ -243,6 +244,19 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   ro.refit_uniform = coarse_lengths == "uniform";
   ro.quantize.relaxed = relaxed;
   ro.quantize.relaxed_weight = relaxed_weight;
+  std::string half_arc_used;
+  try {
+    half_arc_used = tmesh::set_half_arc_mode(ro, half_arc, reorder_weight);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(e.what());
+  }
+  if (relaxed && half_arc_used != "off")
+    throw py::value_error("half_arc and relaxed exclude each other");
+  if (!(reorder_weight >= 0) || !std::isfinite(reorder_weight))
+    throw py::value_error("reorder_weight must be >= 0");
+  if ((keep_crossings || reorder_weight != 1) && half_arc_used != "bounded")
+    throw py::value_error("reorder_weight and keep_crossings need bounded half-arc quantization");
+  ro.keep_crossings = keep_crossings;
   ro.quantize.threads = threads;
   ro.smoothing = smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
   ro.trace.sharp_angle_deg = sharp_angle;
@@ -281,6 +295,12 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   report["min_one_constraints"] = q.constraints.size();
   report["zero_arcs"] = q.zero_arcs;
   report["repair_rounds"] = r.repair_rounds;
+  report["half_arc"] = half_arc_used;
+  if (r.half_arc) {
+    report["half_arc_paths"] = r.half_arc->relaxed.size();
+    report["reordered_junctions"] = r.reordered_junctions;
+    report["aligned_two_gons"] = r.aligned_two_gons;
+  }
   if (coarse) report["coarse_lengths"] = q.coarse_factor > 0 ? "uniform" : "fitted";
   report["density"] = ro.trace.density;
   if (ro.target_quads > 0) {
@@ -339,17 +359,19 @@ void bind_mesh(py::module_& m) {
         py::arg("quality_rounds") = 5, py::arg("threads") = 1, py::arg("time_limit") = py::none(),
         "Quantizes and tessellates a QuadWild layout as `bimdf remesh` does. Returns (V, F, "
         "report): vertices float64 (n, 3), quads int64 (m, 4), the report dict.");
-  m.def("requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(),
-        py::arg("scale") = 1.0, py::arg("edge_length") = py::none(),
-        py::arg("target_faces") = py::none(), py::arg("coarse") = false,
-        py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
-        py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0,
-        py::arg("cost") = "quadratic", py::arg("coarse_lengths") = "uniform",
-        py::arg("calibrate") = true, py::arg("smooth_iterations") = 30,
-        py::arg("smooth_damping") = 0.5, py::arg("quality_rounds") = 5, py::arg("threads") = 1,
-        "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
-        "coarse=True the coarsest layout the separation constraints allow). Returns (V, F, "
-        "report).");
+  m.def(
+      "requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("scale") = 1.0,
+      py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
+      py::arg("coarse") = false, py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
+      py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0, py::arg("cost") = "quadratic",
+      py::arg("coarse_lengths") = "uniform", py::arg("calibrate") = true,
+      py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
+      py::arg("quality_rounds") = 5, py::arg("threads") = 1, py::arg("half_arc") = "auto",
+      py::arg("reorder_weight") = 1.0, py::arg("keep_crossings") = false,
+      "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
+      "coarse=True the coarsest layout the separation constraints allow; half_arc: 'auto' — "
+      "bounded with coarse, else off —, 'exact', 'bounded' or 'off'). Returns (V, F, "
+      "report).");
   m.def(
       "metrics",
       [](py::handle V, py::handle F, py::handle reference) {

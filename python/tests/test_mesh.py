@@ -99,7 +99,7 @@ def test_requantize_equals_the_cli(bunny_remeshed, tmp_path):
         V_cli, F_cli = bimdf.read_obj(str(out))
         np.testing.assert_array_equal(F, F_cli)
         np.testing.assert_array_equal(V, V_cli)
-        for key in ("status", "quads", "zero_arcs", "tmesh_patches", "nonzero_paths"):
+        for key in ("status", "quads", "zero_arcs", "tmesh_patches", "nonzero_paths", "half_arc"):
             assert report[key] == cli_report[key], key
         assert report.get("coarse_lengths") == cli_report.get("coarse_lengths")
         assert_same_numbers(report["metrics"], cli_report["metrics"])
@@ -134,6 +134,12 @@ def test_mesh_errors_are_the_documented_exceptions(tmp_path):
         bimdf.metrics(np.zeros((4, 2)), np.array([[0, 1, 2, 3]]))
     with pytest.raises(TypeError, match=r"^F: expected an integer array, got dtype float64$"):
         bimdf.requantize(V, np.array([[0.0, 1.0, 2.0, 3.0]]))
+    with pytest.raises(ValueError, match=r"^the half-arc mode must be auto, exact, bounded or off, "
+                                         r"not 'both'$"):
+        bimdf.requantize(V, np.array([[0, 1, 2, 3]]), half_arc="both")
+    with pytest.raises(ValueError, match=r"^reorder_weight and keep_crossings need bounded "
+                                         r"half-arc quantization$"):
+        bimdf.requantize(V, np.array([[0, 1, 2, 3]]), reorder_weight=2.0)
     with pytest.raises(ValueError, match=r"^scale must be > 0$"):
         bimdf.remesh(str(BUNNY_LAYOUT), scale=0.0)
     with pytest.raises(ValueError, match=r"^give at most one of scale, edge_length, target_faces$"):

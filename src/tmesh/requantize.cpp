@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "bimdf/error.hpp"
@@ -49,6 +50,19 @@ TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
 }
 
 }  // namespace
+
+std::string set_half_arc_mode(RequantizeOptions& options, const std::string& mode,
+                              double reorder_weight) {
+  if (mode != "auto" && mode != "exact" && mode != "bounded" && mode != "off")
+    throw std::invalid_argument("the half-arc mode must be auto, exact, bounded or off, not '" +
+                                mode + "'");
+  const std::string used = mode != "auto"                                         ? mode
+                           : options.quantize.coarse && !options.quantize.relaxed ? "bounded"
+                                                                                  : "off";
+  options.half_arc = used != "off";
+  options.reorder_weight = used == "bounded" ? reorder_weight : -1;
+  return used;
+}
 
 double mean_edge_length(const QuadMesh& mesh) {
   double sum = 0;

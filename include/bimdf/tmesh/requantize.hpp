@@ -94,6 +94,16 @@ struct RequantizeResult {
 // `--coarse` traces with when none is given (TraceOptions::max_angle_deg; Lyon et al. 2021).
 inline constexpr double kDefaultCoarseMaxAngle = 20;
 
+// Sets options.half_arc and options.reorder_weight for a half-arc mode as users name it:
+// "exact", "bounded" (drift at `reorder_weight`), "off", or "auto" — bounded with
+// options.quantize.coarse (unless relaxed), off otherwise: measured on the 23 shared layouts,
+// bounded coarse layouts are a median 16–25% smaller than greedy's with nearly as good quads,
+// exact ones barely smaller with worse quads and several times the time (docs/benchmarks.md).
+// Returns the mode used ("exact", "bounded" or "off"); throws std::invalid_argument for another
+// name.
+std::string set_half_arc_mode(RequantizeOptions& options, const std::string& mode,
+                              double reorder_weight = 1);
+
 // The mean length of the mesh's edges (each counted once per quad side); 0 without quads.
 double mean_edge_length(const QuadMesh& mesh);
 
