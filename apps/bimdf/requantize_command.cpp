@@ -303,7 +303,9 @@ int run_requantize(const RequantizeCommandOptions& o) {
                  "--coarse-lengths strict-uniform keeps uniform lengths)\n";
   s << "objective     " << q.objective << (o.coarse ? " (coarse stage " : "")
     << (o.coarse ? std::to_string(q.coarse_objective) + ")" : "") << "; " << q.zero_arcs << " of "
-    << tm.num_arcs() << " arcs quantized to 0\n";
+    << (r.half_arc ? r.half_arc->inflated.tmesh.num_arcs() : tm.num_arcs())
+    << (r.half_arc ? " arcs of the cut T-mesh (each copy counted)" : " arcs")
+    << " quantized to 0\n";
   j["density"] = requested_density;
   if (ro.target_quads > 0) {
     j["target_quads"] = ro.target_quads;
