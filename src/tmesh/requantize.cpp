@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "bimdf/error.hpp"
+#include "bimdf/metrics.hpp"
 #include "core/stopwatch.hpp"
 #include "tmesh/density_search.hpp"
 #include "tmesh/separation_repair.hpp"
@@ -179,113 +180,133 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     r.time_collapse_s = collapse_s;
     r.time_smoothing_s = smoothing_s;
   };
-  for (;;) {
-    r.quantization =
-        calibrate ? calibrate_density(tm, base, quantize_once, options, r) : quantize_once();
-    r.time_quantize_s += t.lap();
-    if (r.quantization.arc_length.empty()) {
-      if (smoothed) restore_smoothed();
-      return r;
-    }
-    // A border loop shorter than 3 is found on the lengths alone (and its collapse would be
-    // refused): solve again before collapsing.
-    if (add_border_loop_bounds(tm, incidence, r.quantization.arc_length,
-                               quantize.extra_constraints)) {
+  // A coarsening never grows the base complex (greedy's does not). Drift that splits a line of
+  // the layout (a crossing moved apart) can: then every two-gon is aligned and the T-mesh
+  // solved again, once.
+  int base_complex_in = -1;
+  for (bool again = true; again;) {
+    again = false;
+    for (;;) {
+      r.quantization =
+          calibrate ? calibrate_density(tm, base, quantize_once, options, r) : quantize_once();
+      r.time_quantize_s += t.lap();
+      if (r.quantization.arc_length.empty()) {
+        if (smoothed) restore_smoothed();
+        return r;
+      }
+      // A border loop shorter than 3 is found on the lengths alone (and its collapse would be
+      // refused): solve again before collapsing.
+      if (add_border_loop_bounds(tm, incidence, r.quantization.arc_length,
+                                 quantize.extra_constraints)) {
+        ++r.repair_rounds;
+        continue;
+      }
+      try {
+        r.collapsed =
+            collapse_and_tessellate(tm, cut_incidence, r.quantization.arc_length,
+                                    on_mesh ? mesh : nullptr, options.quantize.relaxed, zips);
+      } catch (const CollapseError& e) {
+        if (!r.half_arc) throw;
+        // Drift the zips cannot close (two T-mesh vertices zipped into an interior vertex of two
+        // quads, say): hold the two-gons there to the arc quantization and solve again.
+        if (const std::vector<int> two_gons = unaligned(e.patches(), false); !two_gons.empty()) {
+          align(two_gons);
+          continue;
+        }
+        // The separation repairs act on a collapse that succeeded; a half-arc quantization that
+        // zips two T-mesh vertices into an interior vertex of two quads (say) has none. Arcs
+        // only, then, as the result says.
+        RequantizeOptions arcs_only = options;
+        arcs_only.half_arc = false;
+        RequantizeResult fallback = requantize_tmesh(std::move(r.traced), mesh, arcs_only, source);
+        fallback.half_arc_fallback = e.what();
+        fallback.time_quantize_s += r.time_quantize_s;
+        fallback.time_collapse_s += r.time_collapse_s + t.lap();
+        return fallback;
+      }
+      r.time_collapse_s += t.lap();
+      // Both checks run, so that one round bounds every fault found.
+      const bool merged = add_separation_bounds(tm, incidence, r.quantization.arc_length,
+                                                r.collapsed, quantize.extra_constraints);
+      const bool folded = add_valence_bounds(tm, r.quantization.arc_length, r.collapsed,
+                                             quantize.extra_constraints);
+      if (merged || folded) {
+        ++r.repair_rounds;
+        continue;
+      }
+      r.repair_constraints = quantize.extra_constraints;
+      if (!on_mesh) break;
+      SmoothedQuads left =
+          smooth_requantized(*mesh, tm, incidence, r.traced.feature_edges, r.traced.feature_corners,
+                             r.collapsed, options.smoothing, more_charts);
+      r.time_smoothing_s += t.lap();
+      int bad = left.inverted + left.degenerate;
+      if (smoothed && bad >= smoothed_bad) {
+        restore_smoothed();
+        if (!aligning) break;
+        // Aligning did not help there: no more of it; a split may still.
+        left = smoothed_left;
+        bad = smoothed_bad;
+        aligned_rounds = options.max_split_repairs;
+      }
+      aligning = false;
+      const auto keep_smoothed = [&] {
+        smoothed = r;
+        smoothed_left = left;
+        smoothed_bad = bad;
+      };
+      // Half-arc: quads smoothing did not right (inverted or degenerate) where the re-embedding
+      // could not follow the drift of a two-gon along them: align those two-gons and solve again.
+      if (r.half_arc && aligned_rounds < options.max_split_repairs) {
+        std::vector<int> patches;
+        for (const std::vector<int>* quads : {&left.to_split, &left.degenerate_quads})
+          for (int f : *quads) patches.push_back(r.collapsed.mesh.quad_patch[f]);
+        if (const std::vector<int> two_gons = unaligned(patches, false); !two_gons.empty()) {
+          keep_smoothed();
+          align(two_gons);
+          ++aligned_rounds;
+          aligning = true;
+          continue;
+        }
+      }
+      // Quads smoothing did not right: split them by bounding the quantization and smooth the
+      // new one, a few times at most (each round smooths the whole mesh again); where no split
+      // reaches them, uniform coarse lengths get fitted ones instead.
+      if (left.to_split.empty() || smoothed_rounds >= options.max_split_repairs) break;
+      MinOneConstraints bounds = quantize.extra_constraints;
+      const bool split =
+          add_quad_split_bounds(tm, r.quantization.arc_length, r.collapsed, left.to_split, bounds);
+      const bool refit = !split && options.refit_uniform && quantize.coarse_uniform;
+      if (!split && !refit) break;
+      keep_smoothed();
+      // Half-arc: before fitted lengths grow the base complex, every two-gon held to arcs — the
+      // half-arc optimum's other choices may be what stretched those quads.
+      if (refit && r.half_arc && aligned_rounds < options.max_split_repairs) {
+        if (const std::vector<int> two_gons = unaligned({}, true); !two_gons.empty()) {
+          align(two_gons);
+          ++aligned_rounds;
+          aligning = true;
+          continue;
+        }
+      }
+      if (split) quantize.extra_constraints = std::move(bounds);
+      if (refit) quantize.coarse_uniform = false;
+      ++smoothed_rounds;
       ++r.repair_rounds;
-      continue;
     }
-    try {
-      r.collapsed =
-          collapse_and_tessellate(tm, cut_incidence, r.quantization.arc_length,
-                                  on_mesh ? mesh : nullptr, options.quantize.relaxed, zips);
-    } catch (const CollapseError& e) {
-      if (!r.half_arc) throw;
-      // Drift the zips cannot close (two T-mesh vertices zipped into an interior vertex of two
-      // quads, say): hold the two-gons there to the arc quantization and solve again.
-      if (const std::vector<int> two_gons = unaligned(e.patches(), false); !two_gons.empty()) {
+    if (r.half_arc && options.quantize.coarse && on_mesh && !r.collapsed.mesh.quads.empty()) {
+      if (base_complex_in < 0) base_complex_in = measure_quad_mesh(*mesh).base_complex_faces;
+      const std::vector<int> two_gons = unaligned({}, true);
+      if (!two_gons.empty() &&
+          measure_quad_mesh(r.collapsed.mesh).base_complex_faces > base_complex_in) {
         align(two_gons);
-        continue;
-      }
-      // The separation repairs act on a collapse that succeeded; a half-arc quantization that
-      // zips two T-mesh vertices into an interior vertex of two quads (say) has none. Arcs
-      // only, then, as the result says.
-      RequantizeOptions arcs_only = options;
-      arcs_only.half_arc = false;
-      RequantizeResult fallback = requantize_tmesh(std::move(r.traced), mesh, arcs_only, source);
-      fallback.half_arc_fallback = e.what();
-      fallback.time_quantize_s += r.time_quantize_s;
-      fallback.time_collapse_s += r.time_collapse_s + t.lap();
-      return fallback;
-    }
-    r.time_collapse_s += t.lap();
-    // Both checks run, so that one round bounds every fault found.
-    const bool merged = add_separation_bounds(tm, incidence, r.quantization.arc_length, r.collapsed,
-                                              quantize.extra_constraints);
-    const bool folded =
-        add_valence_bounds(tm, r.quantization.arc_length, r.collapsed, quantize.extra_constraints);
-    if (merged || folded) {
-      ++r.repair_rounds;
-      continue;
-    }
-    r.repair_constraints = quantize.extra_constraints;
-    if (!on_mesh) break;
-    SmoothedQuads left =
-        smooth_requantized(*mesh, tm, incidence, r.traced.feature_edges, r.traced.feature_corners,
-                           r.collapsed, options.smoothing, more_charts);
-    r.time_smoothing_s += t.lap();
-    int bad = left.inverted + left.degenerate;
-    if (smoothed && bad >= smoothed_bad) {
-      restore_smoothed();
-      if (!aligning) break;
-      // Aligning did not help there: no more of it; a split may still.
-      left = smoothed_left;
-      bad = smoothed_bad;
-      aligned_rounds = options.max_split_repairs;
-    }
-    aligning = false;
-    const auto keep_smoothed = [&] {
-      smoothed = r;
-      smoothed_left = left;
-      smoothed_bad = bad;
-    };
-    // Half-arc: quads smoothing did not right (inverted or degenerate) where the re-embedding
-    // could not follow the drift of a two-gon along them: align those two-gons and solve again.
-    if (r.half_arc && aligned_rounds < options.max_split_repairs) {
-      std::vector<int> patches;
-      for (const std::vector<int>* quads : {&left.to_split, &left.degenerate_quads})
-        for (int f : *quads) patches.push_back(r.collapsed.mesh.quad_patch[f]);
-      if (const std::vector<int> two_gons = unaligned(patches, false); !two_gons.empty()) {
-        keep_smoothed();
-        align(two_gons);
-        ++aligned_rounds;
-        aligning = true;
-        continue;
+        smoothed.reset();
+        aligning = false;
+        smoothed_rounds = aligned_rounds = 0;
+        quantize.coarse_uniform = options.quantize.coarse_uniform;
+        again = true;
       }
     }
-    // Quads smoothing did not right: split them by bounding the quantization and smooth the
-    // new one, a few times at most (each round smooths the whole mesh again); where no split
-    // reaches them, uniform coarse lengths get fitted ones instead.
-    if (left.to_split.empty() || smoothed_rounds >= options.max_split_repairs) break;
-    MinOneConstraints bounds = quantize.extra_constraints;
-    const bool split =
-        add_quad_split_bounds(tm, r.quantization.arc_length, r.collapsed, left.to_split, bounds);
-    const bool refit = !split && options.refit_uniform && quantize.coarse_uniform;
-    if (!split && !refit) break;
-    keep_smoothed();
-    // Half-arc: before fitted lengths grow the base complex, every two-gon held to arcs — the
-    // half-arc optimum's other choices may be what stretched those quads.
-    if (refit && r.half_arc && aligned_rounds < options.max_split_repairs) {
-      if (const std::vector<int> two_gons = unaligned({}, true); !two_gons.empty()) {
-        align(two_gons);
-        ++aligned_rounds;
-        aligning = true;
-        continue;
-      }
-    }
-    if (split) quantize.extra_constraints = std::move(bounds);
-    if (refit) quantize.coarse_uniform = false;
-    ++smoothed_rounds;
-    ++r.repair_rounds;
   }
   r.coarse_refitted = options.quantize.coarse && options.quantize.coarse_uniform &&
                       r.quantization.coarse_factor == 0;

@@ -149,6 +149,9 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
 // half-arc optimum's other choices may be what stretched them; all aligned, the model is
 // Algorithm 2's but for exact one-arc paths).
 // With half_arc and uniform coarse lengths, refit_uniform therefore acts only once all are aligned.
+// And a coarsening never grows the base complex: where the half-arc result's is larger than the
+// input mesh's (drift split a line of the layout — mushroom: 10 patches became 19), every
+// two-gon is aligned and the whole pipeline runs again, once.
 // `options.trace` is not used. Throws CollapseError if the quantized T-mesh does not collapse into
 // a conforming mesh (see collapse.hpp) — with half_arc, only if the arc quantization it then
 // falls back to does not either (RequantizeResult::half_arc_fallback).
