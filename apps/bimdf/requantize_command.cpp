@@ -92,19 +92,18 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                   "grows); `strict-uniform`: uniform, never refitted")
       ->default_val("uniform")
       ->check(CLI::IsMember({"fitted", "uniform", "strict-uniform"}));
-  auto* half_arc =
-      cmd->add_option("--half-arc", o.half_arc,
-                      "Half-arc quantization (paper §4.3): the two sides of every non-zero path "
-                      "that crosses no other (alone, or overlapping one other along its line) "
-                      "are quantized separately, so that T-junctions on opposite sides of it may "
-                      "trade places. `exact`: the path's own length is kept ≥ 1 (the other paths "
-                      "keep Algorithm 2's bounds); `bounded`: every path keeps Algorithm 2's "
-                      "bounds and each unit by which the two sides drift apart at a vertex costs "
-                      "--reorder-weight; `off`: arcs only; `auto`: bounded with --coarse, else off "
-                      "(measured in docs/benchmarks.md)")
-          ->default_val("auto")
-          ->check(CLI::IsMember({"exact", "bounded", "off", "auto"}))
-          ->excludes(relaxed);
+  cmd->add_option("--half-arc", o.half_arc,
+                  "Half-arc quantization (paper §4.3): the two sides of every non-zero path "
+                  "that crosses no other (alone, or overlapping one other along its line) "
+                  "are quantized separately, so that T-junctions on opposite sides of it may "
+                  "trade places. `exact`: the path's own length is kept ≥ 1 (the other paths "
+                  "keep Algorithm 2's bounds); `bounded`: every path keeps Algorithm 2's "
+                  "bounds and each unit by which the two sides drift apart at a vertex costs "
+                  "--reorder-weight; `off`: arcs only; `auto`: bounded with --coarse, else off "
+                  "(measured in docs/benchmarks.md)")
+      ->default_val("auto")
+      ->check(CLI::IsMember({"exact", "bounded", "off", "auto"}))
+      ->excludes(relaxed);
   cmd->add_option("--reorder-weight", o.reorder_weight,
                   "With bounded half-arc quantization: the cost of each unit of drift between a "
                   "path's two sides at one of its vertices (0: free; large: arcs only)")
@@ -266,10 +265,8 @@ int run_requantize(const RequantizeCommandOptions& o) {
     // The cut T-mesh the run made, at the same targets (its arcs' are the input's), with no
     // two-gon aligned by the repairs.
     tmesh::HalfArcSetup unrepaired = *r.half_arc;
-    unrepaired.aligned.assign(unrepaired.aligned.size(), 0);
-    unrepaired.bounds = unrepaired.reorder_weight >= 0
-                            ? unrepaired.greedy_bounds
-                            : tmesh::half_arc_bounds(tm, r.incidence, unrepaired.inflated);
+    tmesh::set_aligned(unrepaired, tm, r.incidence,
+                       std::vector<char>(unrepaired.inflated.two_gons.size(), 0));
     const tmesh::TMeshQuantization half = tmesh::quantize_inflated(unrepaired, plain);
     const bool coarse = ro.quantize.coarse;
     const double g = coarse ? greedy.coarse_objective : greedy.objective;

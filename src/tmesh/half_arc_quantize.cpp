@@ -88,29 +88,36 @@ HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& inciden
   setup.relaxed = relaxable_paths(tmesh, incidence);
   setup.inflated = inflate_two_gons(tmesh, incidence, setup.relaxed);
   setup.incidence = validate_tmesh(setup.inflated.tmesh, "<inflated t-mesh>");
-  setup.greedy_bounds = half_arc_bounds(tmesh, incidence, setup.inflated,
-                                        std::vector<char>(setup.inflated.two_gons.size(), 1));
-  setup.bounds =
-      reorder_weight >= 0 ? setup.greedy_bounds : half_arc_bounds(tmesh, incidence, setup.inflated);
+  const size_t n = setup.inflated.two_gons.size();
+  setup.greedy_bounds = half_arc_bounds(tmesh, incidence, setup.inflated, std::vector<char>(n, 1));
   setup.reorder_weight = reorder_weight;
   setup.keep_crossings = keep_crossings;
-  setup.aligned.assign(setup.inflated.two_gons.size(), 0);
+  set_aligned(setup, tmesh, incidence, std::vector<char>(n, 0));
   return setup;
+}
+
+void set_aligned(HalfArcSetup& setup, const TMesh& tmesh, const TMeshIncidence& incidence,
+                 std::vector<char> aligned) {
+  if (aligned.size() != setup.inflated.two_gons.size())
+    throw std::invalid_argument("set_aligned: one flag per two-gon");
+  setup.aligned = std::move(aligned);
+  setup.bounds = setup.reorder_weight >= 0
+                     ? setup.greedy_bounds
+                     : half_arc_bounds(tmesh, incidence, setup.inflated, setup.aligned);
 }
 
 int align_two_gons(HalfArcSetup& setup, const TMesh& tmesh, const TMeshIncidence& incidence,
                    const std::vector<int>& two_gons) {
-  setup.aligned.resize(setup.inflated.two_gons.size(), 0);
+  std::vector<char> aligned = setup.aligned;
+  aligned.resize(setup.inflated.two_gons.size(), 0);
   int added = 0;
   for (int g : two_gons) {
-    if (g < 0 || g >= static_cast<int>(setup.aligned.size()))
+    if (g < 0 || g >= static_cast<int>(aligned.size()))
       throw std::invalid_argument("align_two_gons: no two-gon " + std::to_string(g));
-    added += !setup.aligned[g];
-    setup.aligned[g] = 1;
+    added += !aligned[g];
+    aligned[g] = 1;
   }
-  setup.bounds = setup.reorder_weight >= 0
-                     ? setup.greedy_bounds
-                     : half_arc_bounds(tmesh, incidence, setup.inflated, setup.aligned);
+  set_aligned(setup, tmesh, incidence, std::move(aligned));
   return added;
 }
 

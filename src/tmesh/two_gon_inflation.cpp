@@ -74,10 +74,25 @@ Fan right_fan(const TMesh& t, const PatchBoundary& b, int in, int out) {
   return fan_between(t, b, TMesh::opposite(in), TMesh::opposite(out));
 }
 
-// Why path m may not be relaxed, or "" (rules (a)–(d) of half_arc.hpp); `arc_uses` and
-// `interior_uses` count the distinct paths running along each arc / through each vertex.
+// Whether a chain of half-arcs visits one of its vertices twice.
+bool passes_a_vertex_twice(const TMesh& t, const std::vector<int>& half_arcs) {
+  std::vector<int> vertices{t.half_arc_tail(half_arcs.front())};
+  for (int h : half_arcs) vertices.push_back(t.half_arc_head(h));
+  std::sort(vertices.begin(), vertices.end());
+  return std::adjacent_find(vertices.begin(), vertices.end()) != vertices.end();
+}
+
+// A sequence of half-arcs walked the other way.
+std::vector<int> reversed(const std::vector<int>& half_arcs) {
+  std::vector<int> out;
+  for (auto h = half_arcs.rbegin(); h != half_arcs.rend(); ++h) out.push_back(TMesh::opposite(*h));
+  return out;
+}
+
+// Why path m may not be relaxed, or "" (rules (a)–(d) of half_arc.hpp); `on_arc` lists the
+// distinct paths running along each arc, `interior_uses` counts those through each vertex.
 std::string relax_issue(const TMesh& t, const TMeshIncidence& inc, const PatchBoundary& b,
-                        const std::vector<int>& path, const std::vector<int>& arc_uses,
+                        const std::vector<int>& path, const std::vector<std::vector<int>>& on_arc,
                         const std::vector<int>& interior_uses, const std::vector<int>* partner) {
   // An overlapping partner (a pair, OverlapLine) shares arcs and interior vertices with it.
   const auto interior_of_partner = [&](int c) {
@@ -88,16 +103,12 @@ std::string relax_issue(const TMesh& t, const TMeshIncidence& inc, const PatchBo
   };
   if (path.size() < 2) return "it runs along one arc";
   if (arcs_along(path).size() != path.size()) return "it runs along an arc twice";
-  std::vector<int> vertices{t.half_arc_tail(path.front())};
-  for (int h : path) vertices.push_back(t.half_arc_head(h));
-  std::sort(vertices.begin(), vertices.end());
-  if (std::adjacent_find(vertices.begin(), vertices.end()) != vertices.end())
-    return "it passes a vertex twice";
+  if (passes_a_vertex_twice(t, path)) return "it passes a vertex twice";
   for (int h : path) {
     if (inc.is_border(h) || inc.is_border(TMesh::opposite(h))) return "it runs along the border";
     if (!t.arc_feature.empty() && t.arc_feature[TMesh::arc_of(h)])
       return "it runs along a feature curve";
-    if (arc_uses[TMesh::arc_of(h)] > (partner ? 2 : 1)) return "another path shares its arc";
+    if (on_arc[TMesh::arc_of(h)].size() > (partner ? 2u : 1u)) return "another path shares its arc";
   }
   for (size_t i = 1; i < path.size(); ++i) {
     const int c = t.half_arc_tail(path[i]);
@@ -125,13 +136,6 @@ std::vector<int> representatives(const TMesh& t) {
   return rep;
 }
 
-// A sequence of half-arcs walked the other way.
-std::vector<int> reversed(const std::vector<int>& half_arcs) {
-  std::vector<int> out;
-  for (auto h = half_arcs.rbegin(); h != half_arcs.rend(); ++h) out.push_back(TMesh::opposite(*h));
-  return out;
-}
-
 // Two paths on one line that overlap partially, each reaching past the other's end: their
 // union (`line`, oriented canonically: the smaller of its two half-arc sequences), which of the
 // two starts at the line's tail (`first`: 0 for a, 1 for b), where it ends (`first_end`, a
@@ -157,11 +161,7 @@ std::optional<OverlapLine> overlap_line(const TMesh& t, const std::vector<int>& 
         o.first = swap;
         o.first_end = static_cast<int>(head.size());
         o.second_start = static_cast<int>(k);
-        std::vector<int> vertices{t.half_arc_tail(o.line.front())};
-        for (int h : o.line) vertices.push_back(t.half_arc_head(h));
-        std::sort(vertices.begin(), vertices.end());
-        if (std::adjacent_find(vertices.begin(), vertices.end()) != vertices.end())
-          return std::nullopt;
+        if (passes_a_vertex_twice(t, o.line)) return std::nullopt;
         const std::vector<int> back = reversed(o.line);
         if (back < o.line) {
           const int n = static_cast<int>(o.line.size());
@@ -182,17 +182,19 @@ struct Relaxability {
   std::vector<int> representative;
   std::vector<int> partner;        // per representative path: the path it overlaps, or −1
   std::vector<std::string> issue;  // per representative path
+  // Per pair, at the smaller of its two paths: their union (`first` 0: that path starts it).
+  std::map<int, OverlapLine> overlap;
 };
 
 Relaxability relaxability(const TMesh& t, const TMeshIncidence& inc) {
   Relaxability r;
   r.representative = representatives(t);
   const auto& paths = t.nonzero_paths;
-  std::vector<int> arc_uses(t.num_arcs(), 0), interior_uses(t.num_vertices(), 0);
+  std::vector<int> interior_uses(t.num_vertices(), 0);
   std::vector<std::vector<int>> on_arc(t.num_arcs());  // the representative paths along it
   for (size_t m = 0; m < paths.size(); ++m) {
     if (r.representative[m] != static_cast<int>(m)) continue;
-    for (int a : arcs_along(paths[m])) ++arc_uses[a], on_arc[a].push_back(static_cast<int>(m));
+    for (int a : arcs_along(paths[m])) on_arc[a].push_back(static_cast<int>(m));
     for (size_t i = 1; i < paths[m].size(); ++i) ++interior_uses[t.half_arc_tail(paths[m][i])];
   }
   // Pairs: two paths sharing arcs with each other only, overlapping partially along one line.
@@ -206,17 +208,21 @@ Relaxability relaxability(const TMesh& t, const TMeshIncidence& inc) {
     return others;
   };
   r.partner.assign(paths.size(), -1);
-  for (size_t m = 0; m < paths.size(); ++m) {
-    if (r.representative[m] != static_cast<int>(m)) continue;
-    const std::vector<int> others = sharing(static_cast<int>(m));
-    if (others.size() != 1 || sharing(others[0]) != std::vector<int>{static_cast<int>(m)}) continue;
-    if (overlap_line(t, paths[m], paths[others[0]])) r.partner[m] = others[0];
+  for (int m = 0; m < static_cast<int>(paths.size()); ++m) {
+    if (r.representative[m] != m) continue;
+    const std::vector<int> others = sharing(m);
+    const int q = others.size() == 1 ? others[0] : -1;
+    if (q < m || sharing(q) != std::vector<int>{m}) continue;  // each pair once, from its first
+    if (std::optional<OverlapLine> line = overlap_line(t, paths[m], paths[q])) {
+      r.partner[m] = q, r.partner[q] = m;
+      r.overlap[m] = std::move(*line);
+    }
   }
   const PatchBoundary boundary(t, inc);
   r.issue.resize(paths.size());
   for (size_t m = 0; m < paths.size(); ++m)
     if (r.representative[m] == static_cast<int>(m))
-      r.issue[m] = relax_issue(t, inc, boundary, paths[m], arc_uses, interior_uses,
+      r.issue[m] = relax_issue(t, inc, boundary, paths[m], on_arc, interior_uses,
                                r.partner[m] >= 0 ? &paths[r.partner[m]] : nullptr);
   // A pair is relaxed together or not at all.
   for (size_t m = 0; m < paths.size(); ++m)
@@ -264,8 +270,9 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
       line_half_arcs.push_back(tmesh.nonzero_paths[m]);
     } else {
       if (q < m && std::find(paths.begin(), paths.end(), q) != paths.end()) continue;
-      const OverlapLine o = *overlap_line(tmesh, tmesh.nonzero_paths[m], tmesh.nonzero_paths[q]);
-      g.paths = o.first == 0 ? std::vector<int>{m, q} : std::vector<int>{q, m};
+      const int low = std::min(m, q), high = std::max(m, q);
+      const OverlapLine& o = r.overlap.at(low);
+      g.paths = o.first == 0 ? std::vector<int>{low, high} : std::vector<int>{high, low};
       g.left_end = o.first_end;
       g.right_start = o.second_start;
       line_half_arcs.push_back(o.line);
@@ -346,13 +353,7 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
   return out;
 }
 
-Zip two_gon_zip(const TwoGon& two_gon) {
-  Zip zip;
-  zip[0] = two_gon.right;
-  for (auto h = two_gon.left.rbegin(); h != two_gon.left.rend(); ++h)
-    zip[1].push_back(TMesh::opposite(*h));
-  return zip;
-}
+Zip two_gon_zip(const TwoGon& two_gon) { return {two_gon.right, reversed(two_gon.left)}; }
 
 std::vector<int64_t> half_arc_lengths(const TMesh& tmesh, const InflatedTMesh& inflated,
                                       const std::vector<int64_t>& arc_length) {

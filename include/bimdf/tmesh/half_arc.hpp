@@ -187,6 +187,12 @@ inline constexpr double kDriftTieBreak = 1e-6;
 int align_two_gons(HalfArcSetup& setup, const TMesh& tmesh, const TMeshIncidence& incidence,
                    const std::vector<int>& two_gons);
 
+// Sets which two-gons are aligned (one flag per two-gon; all 0: none, as prepared) and
+// setup.bounds to match: Algorithm 2's bounds for every path when bounded, else for the paths
+// of aligned two-gons (half_arc_bounds). `tmesh`, `incidence`: as for align_two_gons.
+void set_aligned(HalfArcSetup& setup, const TMesh& tmesh, const TMeshIncidence& incidence,
+                 std::vector<char> aligned);
+
 // T''s incidence with every half-arc facing a two-gon counted on the patch across it (the side
 // its twin's other half-arc lies on): what the separation repairs and smoothing must see, for
 // which a cut is no border. (Collapse and the model need the real one.)
