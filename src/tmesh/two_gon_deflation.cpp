@@ -171,7 +171,14 @@ DeflatedTMesh deflate_two_gons(const InflatedTMesh& inflated,
         along(t, index[first + 1], index[last], mapped);
       i = j;
     }
-    return mapped;
+    // A path detouring around a line's end in T' (inflate_two_gons) goes there and back.
+    std::vector<int> direct;
+    for (int h : mapped)
+      if (!direct.empty() && direct.back() == TMesh::opposite(h))
+        direct.pop_back();
+      else
+        direct.push_back(h);
+    return direct;
   };
   o.patch_sides.resize(cut.num_patches());
   for (int p = 0; p < cut.num_patches(); ++p)

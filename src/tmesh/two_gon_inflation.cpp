@@ -1,6 +1,5 @@
 // Two-gon inflation for half-arc quantization (paper §4.3, Fig. 12a; tmesh/half_arc.hpp): which
-// non-zero paths may be relaxed, the T-mesh cut open along them, and the independent check of a
-// half-arc quantization.
+// non-zero paths may be relaxed, and the T-mesh cut open along them.
 #include <algorithm>
 #include <array>
 #include <map>
@@ -89,18 +88,12 @@ std::vector<int> reversed(const std::vector<int>& half_arcs) {
   return out;
 }
 
-// Why path m may not be relaxed, or "" (rules (a)–(d) of half_arc.hpp); `on_arc` lists the
-// distinct paths running along each arc, `interior_uses` counts those through each vertex.
+// Why path m may not be relaxed, or "" (rules (a)–(c) of half_arc.hpp; (d) is a choice among the
+// paths that pass these, made by relaxability); `on_arc` lists the distinct paths running along
+// each arc.
 std::string relax_issue(const TMesh& t, const TMeshIncidence& inc, const PatchBoundary& b,
                         const std::vector<int>& path, const std::vector<std::vector<int>>& on_arc,
-                        const std::vector<int>& interior_uses, const std::vector<int>* partner) {
-  // An overlapping partner (a pair, OverlapLine) shares arcs and interior vertices with it.
-  const auto interior_of_partner = [&](int c) {
-    if (!partner) return false;
-    for (size_t i = 1; i < partner->size(); ++i)
-      if (t.half_arc_tail((*partner)[i]) == c) return true;
-    return false;
-  };
+                        bool has_partner) {
   if (path.size() < 2) return "it runs along one arc";
   if (arcs_along(path).size() != path.size()) return "it runs along an arc twice";
   if (passes_a_vertex_twice(t, path)) return "it passes a vertex twice";
@@ -108,12 +101,11 @@ std::string relax_issue(const TMesh& t, const TMeshIncidence& inc, const PatchBo
     if (inc.is_border(h) || inc.is_border(TMesh::opposite(h))) return "it runs along the border";
     if (!t.arc_feature.empty() && t.arc_feature[TMesh::arc_of(h)])
       return "it runs along a feature curve";
-    if (on_arc[TMesh::arc_of(h)].size() > (partner ? 2u : 1u)) return "another path shares its arc";
+    if (on_arc[TMesh::arc_of(h)].size() > (has_partner ? 2u : 1u))
+      return "another path shares its arc";
   }
   for (size_t i = 1; i < path.size(); ++i) {
     const int c = t.half_arc_tail(path[i]);
-    if (interior_uses[c] > (interior_of_partner(c) ? 2 : 1))
-      return "another path passes its vertex " + std::to_string(c);
     const Fan left = left_fan(t, b, path[i - 1], path[i]);
     const Fan right = right_fan(t, b, path[i - 1], path[i]);
     if (left.border || right.border) return "its vertex " + std::to_string(c) + " is on the border";
@@ -190,13 +182,10 @@ Relaxability relaxability(const TMesh& t, const TMeshIncidence& inc) {
   Relaxability r;
   r.representative = representatives(t);
   const auto& paths = t.nonzero_paths;
-  std::vector<int> interior_uses(t.num_vertices(), 0);
   std::vector<std::vector<int>> on_arc(t.num_arcs());  // the representative paths along it
-  for (size_t m = 0; m < paths.size(); ++m) {
-    if (r.representative[m] != static_cast<int>(m)) continue;
-    for (int a : arcs_along(paths[m])) on_arc[a].push_back(static_cast<int>(m));
-    for (size_t i = 1; i < paths[m].size(); ++i) ++interior_uses[t.half_arc_tail(paths[m][i])];
-  }
+  for (size_t m = 0; m < paths.size(); ++m)
+    if (r.representative[m] == static_cast<int>(m))
+      for (int a : arcs_along(paths[m])) on_arc[a].push_back(static_cast<int>(m));
   // Pairs: two paths sharing arcs with each other only, overlapping partially along one line.
   const auto sharing = [&](int m) {
     std::vector<int> others;
@@ -222,8 +211,7 @@ Relaxability relaxability(const TMesh& t, const TMeshIncidence& inc) {
   r.issue.resize(paths.size());
   for (size_t m = 0; m < paths.size(); ++m)
     if (r.representative[m] == static_cast<int>(m))
-      r.issue[m] = relax_issue(t, inc, boundary, paths[m], on_arc, interior_uses,
-                               r.partner[m] >= 0 ? &paths[r.partner[m]] : nullptr);
+      r.issue[m] = relax_issue(t, inc, boundary, paths[m], on_arc, r.partner[m] >= 0);
   // A pair is relaxed together or not at all.
   for (size_t m = 0; m < paths.size(); ++m)
     if (r.partner[m] >= 0 && r.issue[m].empty() && !r.issue[r.partner[m]].empty())
@@ -231,14 +219,81 @@ Relaxability relaxability(const TMesh& t, const TMeshIncidence& inc) {
   return r;
 }
 
+// The vertices inside a line (all but its ends).
+std::vector<int> interior_vertices(const TMesh& t, const std::vector<int>& line) {
+  std::vector<int> inside;
+  for (size_t i = 1; i < line.size(); ++i) inside.push_back(t.half_arc_tail(line[i]));
+  return inside;
+}
+
 }  // namespace
 
 std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incidence) {
   const Relaxability r = relaxability(tmesh, incidence);
+  const auto& paths = tmesh.nonzero_paths;
+  // Rule (d) among the paths that pass (a)–(c): per line to cut (a path alone, or a pair at its
+  // smaller path), the lines it crosses. Lines are ranked by their arcs, not by path index, so
+  // that the choice does not depend on the order of the paths.
+  std::vector<int> line_path;
+  std::vector<std::vector<int>> line_arcs;
+  std::vector<std::vector<int>> at_vertex(tmesh.num_vertices());
+  for (int m = 0; m < static_cast<int>(paths.size()); ++m) {
+    if (r.representative[m] != m || !r.issue[m].empty() || (r.partner[m] >= 0 && r.partner[m] < m))
+      continue;
+    const std::vector<int>& line = r.partner[m] < 0 ? paths[m] : r.overlap.at(m).line;
+    for (int c : interior_vertices(tmesh, line))
+      at_vertex[c].push_back(static_cast<int>(line_path.size()));
+    line_path.push_back(m);
+    line_arcs.push_back(arcs_along(line));
+  }
+  const int n = static_cast<int>(line_path.size());
+  std::vector<int> by_rank(n), rank(n);
+  for (int l = 0; l < n; ++l) by_rank[l] = l;
+  std::sort(by_rank.begin(), by_rank.end(),
+            [&](int x, int y) { return line_arcs[x] < line_arcs[y]; });
+  for (int k = 0; k < n; ++k) rank[by_rank[k]] = k;
+  std::vector<std::vector<int>> crosses(n);
+  for (const std::vector<int>& lines : at_vertex)
+    for (int x : lines)
+      for (int y : lines)
+        if (x != y) crosses[x].push_back(y);
+  for (auto& c : crosses) {
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+  }
+  // A maximal set of lines crossing none of each other, greedily: the line crossing the fewest
+  // lines still open first (a maximum independent set of the crossing graph is NP-hard in
+  // general; this rule finds one on its bipartite grid-like parts).
+  std::vector<int> degree(n);
+  std::set<std::pair<int, int>> open;  // (degree, rank)
+  for (int l = 0; l < n; ++l) {
+    degree[l] = static_cast<int>(crosses[l].size());
+    open.insert({degree[l], rank[l]});
+  }
+  enum State : char { kOpen, kChosen, kDropped };
+  std::vector<State> state(n, kOpen);
+  while (!open.empty()) {
+    const int l = by_rank[open.begin()->second];
+    open.erase(open.begin());
+    state[l] = kChosen;
+    for (int x : crosses[l]) {
+      if (state[x] != kOpen) continue;
+      open.erase({degree[x], rank[x]});
+      state[x] = kDropped;
+      for (int y : crosses[x])
+        if (state[y] == kOpen) {
+          open.erase({degree[y], rank[y]});
+          open.insert({--degree[y], rank[y]});
+        }
+    }
+  }
   std::vector<int> out;
-  for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m)
-    if (r.representative[m] == static_cast<int>(m) && r.issue[m].empty())
-      out.push_back(static_cast<int>(m));
+  for (int l = 0; l < n; ++l)
+    if (state[l] == kChosen) {
+      out.push_back(line_path[l]);
+      if (r.partner[line_path[l]] >= 0) out.push_back(r.partner[line_path[l]]);
+    }
+  std::sort(out.begin(), out.end());
   return out;
 }
 
@@ -279,6 +334,19 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
     }
     lines.push_back(std::move(g));
   }
+  // Rule (d): no vertex inside two lines. Per input vertex inside a line: the line, and its
+  // position along it.
+  std::vector<std::array<int, 2>> inside(tmesh.num_vertices(), {-1, -1});
+  for (size_t l = 0; l < lines.size(); ++l)
+    for (size_t i = 1; i < line_half_arcs[l].size(); ++i) {
+      const int c = tmesh.half_arc_tail(line_half_arcs[l][i]);
+      if (inside[c][0] >= 0)
+        throw std::invalid_argument(
+            "inflate_two_gons: the lines of paths " + std::to_string(lines[inside[c][0]].paths[0]) +
+            " and " + std::to_string(lines[l].paths[0]) + " cross at vertex " + std::to_string(c) +
+            "; of two crossing paths at most one can be relaxed");
+      inside[c] = {static_cast<int>(l), static_cast<int>(i)};
+    }
   InflatedTMesh out;
   TMesh& o = out.tmesh;
   o = tmesh;
@@ -349,94 +417,38 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
                                  ? along
                                  : reversed(along);
   }
+  // A path crossing a line (not relaxed itself: rule (d)) reaches the crossing on one side of the
+  // cut and leaves it on the other. T' keeps it a chain by a detour around the line's nearer
+  // end, along one side and back along the other: its length only grows, so Algorithm 2's
+  // bounds still imply its check, and deflation cancels the detour down to the run between the
+  // crossing's two places on the closed line.
+  for (auto& path : o.nonzero_paths) {
+    std::vector<int> chain{path.front()};
+    for (size_t k = 1; k < path.size(); ++k) {
+      const int end = o.half_arc_head(path[k - 1]);
+      if (end != o.half_arc_tail(path[k])) {
+        const auto [l, i] = inside[out.vertex_origin[end]];
+        if (l < 0) throw std::logic_error("inflate_two_gons: a non-zero path broke apart");
+        const TwoGon& g = lines[l];
+        const int n = static_cast<int>(g.left.size());
+        const std::vector<int>& from = end == out.vertex_origin[end] ? g.left : g.right;
+        const std::vector<int>& to = end == out.vertex_origin[end] ? g.right : g.left;
+        if (2 * i <= n) {
+          for (int j = i - 1; j >= 0; --j) chain.push_back(TMesh::opposite(from[j]));
+          for (int j = 0; j < i; ++j) chain.push_back(to[j]);
+        } else {
+          for (int j = i; j < n; ++j) chain.push_back(from[j]);
+          for (int j = n - 1; j >= i; --j) chain.push_back(TMesh::opposite(to[j]));
+        }
+      }
+      chain.push_back(path[k]);
+    }
+    path = std::move(chain);
+  }
   out.two_gons = std::move(lines);
   return out;
 }
 
 Zip two_gon_zip(const TwoGon& two_gon) { return {two_gon.right, reversed(two_gon.left)}; }
-
-std::vector<int64_t> half_arc_lengths(const TMesh& tmesh, const InflatedTMesh& inflated,
-                                      const std::vector<int64_t>& arc_length) {
-  if (arc_length.size() != inflated.arc_origin.size())
-    throw std::invalid_argument("half_arc_lengths: " + std::to_string(arc_length.size()) +
-                                " lengths for " + std::to_string(inflated.arc_origin.size()) +
-                                " arcs of the inflated T-mesh");
-  std::vector<int64_t> out(tmesh.num_half_arcs());
-  for (int a = 0; a < tmesh.num_arcs(); ++a) out[2 * a] = out[2 * a + 1] = arc_length[a];
-  for (const TwoGon& g : inflated.two_gons)
-    for (size_t i = 0; i < g.left.size(); ++i)
-      out[TMesh::opposite(g.left[i])] = arc_length[TMesh::arc_of(g.right[i])];
-  return out;
-}
-
-std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<TwoGon>& two_gons,
-                                        const std::vector<int64_t>& half_arc_length) {
-  const auto& H = half_arc_length;
-  if (static_cast<int>(H.size()) != tmesh.num_half_arcs())
-    return "expected " + std::to_string(tmesh.num_half_arcs()) + " half-arc lengths, got " +
-           std::to_string(H.size());
-  std::vector<char> on_side(tmesh.num_half_arcs(), 0), cut(tmesh.num_arcs(), 0);
-  for (const auto& sides : tmesh.patch_sides)
-    for (const auto& side : sides)
-      for (int h : side) on_side[h] = 1;
-  std::set<std::vector<int>> relaxed;  // the arcs of each relaxed path
-  for (const TwoGon& g : two_gons) {
-    for (int m : g.paths) {
-      if (m < 0 || m >= static_cast<int>(tmesh.nonzero_paths.size()))
-        return "no non-zero path " + std::to_string(m);
-      relaxed.insert(arcs_along(tmesh.nonzero_paths[m]));
-    }
-    for (int h : g.left) {
-      if (h < 0 || h >= tmesh.num_half_arcs()) return "no half-arc " + std::to_string(h);
-      cut[TMesh::arc_of(h)] = 1;
-    }
-  }
-  // A border half-arc has no length of its own: its arc's is the other half's.
-  const auto length = [&](int h) { return on_side[h] ? H[h] : H[TMesh::opposite(h)]; };
-  for (int h = 0; h < tmesh.num_half_arcs(); ++h)
-    if (on_side[h] && H[h] < 0)
-      return "half-arc " + std::to_string(h) + ": negative length " + std::to_string(H[h]);
-  for (int a = 0; a < tmesh.num_arcs(); ++a)
-    if (!cut[a] && length(2 * a) != length(2 * a + 1))
-      return "arc " + std::to_string(a) + ": its half-arcs have lengths " +
-             std::to_string(length(2 * a)) + " and " + std::to_string(length(2 * a + 1)) +
-             " but it lies on no relaxed path";
-  for (int p = 0; p < tmesh.num_patches(); ++p)
-    for (int k = 0; k < 2; ++k) {
-      int64_t x = 0, y = 0;
-      for (int h : tmesh.patch_sides[p][k]) x += H[h];
-      for (int h : tmesh.patch_sides[p][k + 2]) y += H[h];
-      if (x != y)
-        return "patch " + std::to_string(p) + ": sides " + std::to_string(k) + " and " +
-               std::to_string(k + 2) + " have lengths " + std::to_string(x) + " and " +
-               std::to_string(y);
-    }
-  for (const TwoGon& g : two_gons) {
-    const int n = static_cast<int>(g.left.size());
-    // Prefix sums of either side along the line: sum[c][i] over its first i half-arcs.
-    std::array<std::vector<int64_t>, 2> sum{std::vector<int64_t>(n + 1, 0),
-                                            std::vector<int64_t>(n + 1, 0)};
-    for (int i = 0; i < n; ++i) {
-      sum[0][i + 1] = sum[0][i] + H[g.left[i]];
-      sum[1][i + 1] = sum[1][i] + H[TMesh::opposite(g.left[i])];
-    }
-    const std::string line = "the line of path " + std::to_string(g.paths.front());
-    if (sum[0][n] != sum[1][n])
-      return line + ": its sides have lengths " + std::to_string(sum[0][n]) + " and " +
-             std::to_string(sum[1][n]);
-    if (g.paths.size() == 1 && sum[0][n] < 1) return line + ": it has length 0";
-    if (g.paths.size() == 2 && sum[0][g.left_end] < 1)
-      return "path " + std::to_string(g.paths[0]) + ": its left side has length 0";
-    if (g.paths.size() == 2 && sum[1][n] - sum[1][g.right_start] < 1)
-      return "path " + std::to_string(g.paths[1]) + ": its right side has length 0";
-  }
-  for (size_t m = 0; m < tmesh.nonzero_paths.size(); ++m) {
-    if (relaxed.count(arcs_along(tmesh.nonzero_paths[m]))) continue;
-    int64_t sum = 0;
-    for (int h : tmesh.nonzero_paths[m]) sum += length(h);
-    if (sum == 0) return "non-zero path " + std::to_string(m) + " has length 0";
-  }
-  return "";
-}
 
 }  // namespace bimdf::tmesh

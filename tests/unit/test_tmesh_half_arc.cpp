@@ -47,8 +47,8 @@ TEST(HalfArc, RelaxablePathsFollowTheRules) {
   };
   TMeshIncidence inc = validate_tmesh(t);
   // Path 0 represents itself and path 3 (its half-arc sequence is the smaller), but shares arc
-  // 4 with path 5; paths 4 and 5 cross at (2, 1).
-  EXPECT_EQ(relaxable_paths(t, inc), std::vector<int>{});
+  // 4 with path 5; path 4 crosses path 5 at (2, 1), which is not relaxed.
+  EXPECT_EQ(relaxable_paths(t, inc), std::vector<int>{4});
   t.nonzero_paths.pop_back();
   inc = validate_tmesh(t);
   EXPECT_EQ(relaxable_paths(t, inc), (std::vector<int>{0, 4}));
@@ -62,6 +62,42 @@ TEST(HalfArc, RelaxablePathsFollowTheRules) {
   inc = validate_tmesh(t);
   EXPECT_EQ(relaxable_paths(t, inc), std::vector<int>{});
   EXPECT_THROW(inflate_two_gons(t, inc, {0}), std::invalid_argument);
+}
+
+TEST(HalfArc, OfTwoCrossingPathsOneIsRelaxedAndTheOtherDetoursInTheCut) {
+  GridTMesh g = three_by_two();
+  TMesh& t = g.tmesh;
+  // y = 1 from x = 1 to 3 and x = 2 from y = 0 to 2: they cross at (2, 1).
+  t.nonzero_paths = {{2 * 4, 2 * 5}, {2 * 13, 2 * 14}};
+  TMeshIncidence inc = validate_tmesh(t);
+  const int crossing = t.half_arc_tail(2 * 5);
+  ASSERT_EQ(crossing, t.half_arc_tail(2 * 14));
+  // Both cross one line; the first by its arcs (4, 5 < 13, 14) is relaxed, in either order.
+  EXPECT_EQ(relaxable_paths(t, inc), std::vector<int>{0});
+  try {
+    inflate_two_gons(t, inc, {0, 1});
+    ADD_FAILURE() << "crossing paths were both relaxed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "inflate_two_gons: the lines of paths 0 and 1 cross at vertex " +
+                  std::to_string(crossing) + "; of two crossing paths at most one can be relaxed");
+  }
+  const InflatedTMesh inflated = inflate_two_gons(t, inc, {0});
+  const TMeshIncidence cut_inc = validate_tmesh(inflated.tmesh);  // every path a chain again
+  const TwoGon& line = inflated.two_gons.at(0);
+  // The crossing path reaches the right copy of (2, 1) from below, detours around the line's
+  // tail (1, 1) and leaves the left copy upwards.
+  EXPECT_EQ(inflated.tmesh.nonzero_paths[1],
+            (std::vector<int>{2 * 13, TMesh::opposite(line.right[0]), line.left[0], 2 * 14}));
+  // Deflated, the detour shrinks to the run between the crossing's two places on the line:
+  // here none, as lengths that keep the crossing give it one place.
+  std::vector<int64_t> length(inflated.tmesh.num_arcs(), 1);
+  const DeflatedTMesh d = deflate_two_gons(inflated, length);
+  EXPECT_EQ(check_quantization(d.tmesh, d.arc_length), "");
+  EXPECT_EQ(d.tmesh.nonzero_paths[1].size(), 2u);
+  std::swap(t.nonzero_paths[0], t.nonzero_paths[1]);
+  inc = validate_tmesh(t);
+  EXPECT_EQ(relaxable_paths(t, inc), std::vector<int>{1});
 }
 
 TEST(HalfArc, InflationCutsTheMeshOpenAlongEachPath) {
@@ -368,7 +404,7 @@ TMesh traded_junction_grid() {
 // depend on the order of the paths (10 shuffles, the same half-arc lengths).
 TEST(HalfArc, DeflationIsAValidArcQuantizationInAnyPathOrder) {
   std::mt19937 rng(23);
-  int reordered = 0, deflated = 0;
+  int reordered = 0, deflated = 0, detoured = 0, split_crossings = 0;
   for (int trial = -1; trial < testing::scaled(150); ++trial) {
     GridTMesh g{traded_junction_grid(), 3, 2};
     if (trial >= 0) g = random_grid_tmesh(rng, 2 + trial % 4, 2 + (trial / 4) % 3, 2 + trial % 6);
@@ -385,6 +421,11 @@ TEST(HalfArc, DeflationIsAValidArcQuantizationInAnyPathOrder) {
     ASSERT_NO_THROW(validate_tmesh(d.tmesh)) << "trial " << trial;
     ASSERT_EQ(check_quantization(d.tmesh, d.arc_length), "") << "trial " << trial;
     reordered += d.reordered_junctions;
+    // Paths crossing a line detour in T'; where the crossing split, deflated they run along it.
+    for (size_t m = 0; m < t.nonzero_paths.size(); ++m) {
+      detoured += h.inflated.tmesh.nonzero_paths[m].size() > t.nonzero_paths[m].size();
+      split_crossings += d.tmesh.nonzero_paths[m].size() > t.nonzero_paths[m].size();
+    }
     std::vector<Zip> zips;
     for (const TwoGon& two_gon : h.inflated.two_gons) zips.push_back(two_gon_zip(two_gon));
     std::vector<int> zipped, plain;
@@ -417,9 +458,11 @@ TEST(HalfArc, DeflationIsAValidArcQuantizationInAnyPathOrder) {
       ASSERT_EQ(sd.reordered_junctions, d.reordered_junctions);
     }
   }
-  std::printf("%d deflated, %d junctions reordered\n", deflated, reordered);
+  std::printf("%d deflated, %d junctions reordered, %d paths detour (%d across split crossings)\n",
+              deflated, reordered, detoured, split_crossings);
   EXPECT_GT(deflated, testing::scaled(150) / 4);
   EXPECT_GT(reordered, 0);  // the first grid's, at least
+  EXPECT_GT(split_crossings, 0);
 }
 
 // In the spirit of the paper's Fig. 11: a 3 × 2 grid whose upper row is thin (0.2 against
