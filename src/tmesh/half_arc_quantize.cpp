@@ -82,6 +82,14 @@ MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& inci
   return out;
 }
 
+std::vector<char> drift_pins(const TwoGon& two_gon, bool keep_crossings) {
+  std::vector<char> pinned = two_gon.path_crossing;
+  if (keep_crossings)
+    for (size_t i = 0; i < pinned.size(); ++i) pinned[i] |= two_gon.crossing[i];
+  if (two_gon.paths.size() == 2) pinned[two_gon.left_end] = pinned[two_gon.right_start] = 1;
+  return pinned;
+}
+
 HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
                                double reorder_weight, bool keep_crossings) {
   HalfArcSetup setup;
@@ -158,14 +166,8 @@ TMeshQuantization solve_inflated(const HalfArcSetup& setup, const MinOneConstrai
   model.two_gon_aligned = setup.aligned;
   for (const TwoGon& g : setup.inflated.two_gons)
     model.two_gon_split.push_back({g.left_end, g.right_start});
-  // A ladder does not drift at the inner ends of an overlapping pair either: both paths' sides
-  // then sum equally, as a path alone's do, so that Algorithm 2's bounds hold either side.
-  for (const TwoGon& g : setup.inflated.two_gons) {
-    std::vector<char> pinned =
-        setup.keep_crossings ? g.crossing : std::vector<char>(g.left.size() + 1, 0);
-    if (g.paths.size() == 2) pinned[g.left_end] = pinned[g.right_start] = 1;
-    model.two_gon_pinned.push_back(std::move(pinned));
-  }
+  for (const TwoGon& g : setup.inflated.two_gons)
+    model.two_gon_pinned.push_back(drift_pins(g, setup.keep_crossings));
   q.time_model_s = t.lap();
   detail::run_quantization(cut, setup.incidence, q.constraints, model, options, q);
   return q;

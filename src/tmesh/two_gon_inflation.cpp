@@ -365,6 +365,7 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
   for (size_t l = 0; l < lines.size(); ++l) {
     const std::vector<int>& path = line_half_arcs[l];
     lines[l].crossing.assign(path.size() + 1, 0);
+    lines[l].path_crossing.assign(path.size() + 1, 0);
     for (size_t i = 1; i < path.size(); ++i) {
       const int c = tmesh.half_arc_tail(path[i]);
       const int copy = o.num_vertices();
@@ -429,7 +430,8 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
       if (end != o.half_arc_tail(path[k])) {
         const auto [l, i] = inside[out.vertex_origin[end]];
         if (l < 0) throw std::logic_error("inflate_two_gons: a non-zero path broke apart");
-        const TwoGon& g = lines[l];
+        TwoGon& g = lines[l];
+        g.path_crossing[i] = 1;
         const int n = static_cast<int>(g.left.size());
         const std::vector<int>& from = end == out.vertex_origin[end] ? g.left : g.right;
         const std::vector<int>& to = end == out.vertex_origin[end] ? g.right : g.left;

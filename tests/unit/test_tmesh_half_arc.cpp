@@ -89,6 +89,8 @@ TEST(HalfArc, OfTwoCrossingPathsOneIsRelaxedAndTheOtherDetoursInTheCut) {
   // tail (1, 1) and leaves the left copy upwards.
   EXPECT_EQ(inflated.tmesh.nonzero_paths[1],
             (std::vector<int>{2 * 13, TMesh::opposite(line.right[0]), line.left[0], 2 * 14}));
+  EXPECT_EQ(line.path_crossing, (std::vector<char>{0, 1, 0}));
+  EXPECT_EQ(drift_pins(line, false), (std::vector<char>{0, 1, 0}));
   // Deflated, the detour shrinks to the run between the crossing's two places on the line:
   // here none, as lengths that keep the crossing give it one place.
   std::vector<int64_t> length(inflated.tmesh.num_arcs(), 1);
@@ -222,14 +224,10 @@ TEST(HalfArc, OptimumEqualsTheMilpOracleAndNeverLosesToGreedy) {
     ASSERT_EQ(h.quantization.status, SolveStatus::Optimal) << "trial " << trial;
     ASSERT_EQ(check_half_arc_quantization(t, h.inflated.two_gons, h.half_arc_length), "")
         << "trial " << trial;
-    // Bounded two-gons are pinned where asked and at an overlapping pair's inner ends.
+    // Bounded two-gons do not drift at their pins (drift_pins).
     std::vector<std::vector<char>> pinned;
-    for (const TwoGon& two_gon : h.inflated.two_gons) {
-      pinned.push_back(h.keep_crossings ? two_gon.crossing
-                                        : std::vector<char>(two_gon.left.size() + 1, 0));
-      if (two_gon.paths.size() == 2) pinned.back()[two_gon.left_end] = 1;
-      if (two_gon.paths.size() == 2) pinned.back()[two_gon.right_start] = 1;
-    }
+    for (const TwoGon& two_gon : h.inflated.two_gons)
+      pinned.push_back(drift_pins(two_gon, h.keep_crossings));
     const double oracle =
         milp_optimum(t, o.cost, o.side_weight, &h.quantization.constraints, 12, -1,
                      &h.inflated.two_gons, &h.inflated.arc_origin, reorder, &pinned);
