@@ -93,7 +93,7 @@ std::vector<char> drift_pins(const TwoGon& two_gon, bool keep_crossings) {
 HalfArcSetup prepare_half_arcs(const TMesh& tmesh, const TMeshIncidence& incidence,
                                double reorder_weight, bool keep_crossings) {
   HalfArcSetup setup;
-  setup.relaxed = relaxable_paths(tmesh, incidence);
+  setup.relaxed = relaxable_paths(tmesh, incidence, reorder_weight >= 0);
   setup.inflated = inflate_two_gons(tmesh, incidence, setup.relaxed);
   setup.incidence = validate_tmesh(setup.inflated.tmesh, "<inflated t-mesh>");
   const size_t n = setup.inflated.two_gons.size();

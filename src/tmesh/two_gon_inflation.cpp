@@ -228,9 +228,15 @@ std::vector<int> interior_vertices(const TMesh& t, const std::vector<int>& line)
 
 }  // namespace
 
-std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incidence) {
+std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incidence,
+                                 bool crossed) {
   const Relaxability r = relaxability(tmesh, incidence);
   const auto& paths = tmesh.nonzero_paths;
+  // Per vertex: the distinct paths passing through it.
+  std::vector<std::vector<int>> through(tmesh.num_vertices());
+  for (int m = 0; m < static_cast<int>(paths.size()); ++m)
+    if (r.representative[m] == m)
+      for (int c : interior_vertices(tmesh, paths[m])) through[c].push_back(m);
   // Rule (d) among the paths that pass (a)–(c): per line to cut (a path alone, or a pair at its
   // smaller path), the lines it crosses. Lines are ranked by their arcs, not by path index, so
   // that the choice does not depend on the order of the paths.
@@ -241,8 +247,13 @@ std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incid
     if (r.representative[m] != m || !r.issue[m].empty() || (r.partner[m] >= 0 && r.partner[m] < m))
       continue;
     const std::vector<int>& line = r.partner[m] < 0 ? paths[m] : r.overlap.at(m).line;
-    for (int c : interior_vertices(tmesh, line))
-      at_vertex[c].push_back(static_cast<int>(line_path.size()));
+    const std::vector<int> inside = interior_vertices(tmesh, line);
+    if (!crossed && std::any_of(inside.begin(), inside.end(), [&](int c) {
+          return std::any_of(through[c].begin(), through[c].end(),
+                             [&](int q) { return q != m && q != r.partner[m]; });
+        }))
+      continue;
+    for (int c : inside) at_vertex[c].push_back(static_cast<int>(line_path.size()));
     line_path.push_back(m);
     line_arcs.push_back(arcs_along(line));
   }

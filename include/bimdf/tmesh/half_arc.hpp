@@ -39,11 +39,15 @@
 // (or pinning it to 0) needs an edge carrying the drift at that vertex beside the edge carrying
 // the line's length, and the two split the line's half-arcs in crossing ways (left vs right;
 // before vs after the vertex), which the edges of one flow network cannot do while each still
-// carries exactly its sum. So of crossing paths one is relaxed (a maximal set of
-// lines crossing none of each other, chosen by the lines' arcs: fewest crossings first), and the
-// other keeps Algorithm 2's bounds: of the multi-arc paths of the 23 shared layouts traced at
-// 35°, 73% are relaxed, against 53% when neither of two crossing paths was (dino: 947 of 1294
-// against 724). In T' a path crossing
+// carries exactly its sum. So of crossing paths one is relaxed (a maximal set of lines
+// crossing none of each other, chosen by the lines' arcs: fewest crossings first), and the
+// other keeps Algorithm 2's bounds — for bounded two-gons, which then hold still where a path
+// crosses them (drift_pins): of the multi-arc paths of the 23 shared layouts traced at 35°, 73%
+// are relaxed, against 53% when neither of two crossing paths is. An exact two-gon cannot hold
+// still at one vertex (that needs the drift edge above), and drifting where a non-zero path
+// crosses it — splitting the crossing of two separatrices — its quads fold (blade at 10°: 5th
+// percentile of the scaled Jacobian 0.97 → 0.32, minutes of repairs); so exact two-gons go
+// only along lines no other path crosses (relaxable_paths' `crossed` false). In T' a path crossing
 // a line reaches the crossing on one side of the cut and leaves it on the other: it detours
 // around the line's nearer end (along one side and back along the other), which keeps it a
 // chain; deflated, the detour shrinks to the run between the crossing's two places. Three or
@@ -115,9 +119,10 @@ struct InflatedTMesh {
 };
 
 // The paths to relax (rules above), as sorted indices into tmesh.nonzero_paths; of identical
-// paths only the first; both of an overlapping pair; of crossing ones, those rule (d) chooses.
+// paths only the first; both of an overlapping pair; of crossing ones, those rule (d) chooses —
+// with `crossed`, else none that any other path crosses (for exact two-gons, see above).
 // Deterministic, and independent of the order of the paths.
-std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incidence);
+std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incidence, bool crossed);
 
 // Cuts the T-mesh open along `paths` (from relaxable_paths; throws std::invalid_argument for a
 // path that breaks rules (a)–(c), one of an overlapping pair without the other, or two paths
