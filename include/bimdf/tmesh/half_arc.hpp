@@ -175,7 +175,7 @@ std::string check_half_arc_quantization(const TMesh& tmesh, const std::vector<Tw
 // keep_crossings, a bounded two-gon does not drift at any crossing (a path vertex with arcs on
 // both sides): splitting one into two T-junctions breaks a straight line of the layout in two.
 // Measured (docs/benchmarks.md), that keeps every coarse base complex near greedy's, where
-// drifting crossings shrink most of them by 16–25%.
+// drifting crossings shrink most of them by 20–25%.
 //
 // `aligned` (per two-gon, all 0 at first): two-gons held to an arc quantization along their
 // path — sides equal half-arc by half-arc, the path kept by Algorithm 2's bounds again — where

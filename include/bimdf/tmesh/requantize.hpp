@@ -97,7 +97,7 @@ inline constexpr double kDefaultCoarseMaxAngle = 20;
 // Sets options.half_arc and options.reorder_weight for a half-arc mode as users name it:
 // "exact", "bounded" (drift at `reorder_weight`), "off", or "auto" — bounded with
 // options.quantize.coarse (unless relaxed), off otherwise: measured on the 23 shared layouts,
-// bounded coarse layouts are a median 16–25% smaller than greedy's with nearly as good quads,
+// bounded coarse layouts are a median 20–25% smaller than greedy's with nearly as good quads,
 // exact ones barely smaller with worse quads and several times the time (docs/benchmarks.md).
 // Returns the mode used ("exact", "bounded" or "off"); throws std::invalid_argument for another
 // name.
