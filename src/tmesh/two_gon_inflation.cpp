@@ -273,8 +273,8 @@ std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incid
     c.erase(std::unique(c.begin(), c.end()), c.end());
   }
   // A maximal set of lines crossing none of each other, greedily: the line crossing the fewest
-  // lines still open first (a maximum independent set of the crossing graph is NP-hard in
-  // general; this rule finds one on its bipartite grid-like parts).
+  // lines still open first (the usual heuristic for a large independent set; a maximum one is
+  // NP-hard to find in general, and not needed: every line left out keeps Algorithm 2's bounds).
   std::vector<int> degree(n);
   std::set<std::pair<int, int>> open;  // (degree, rank)
   for (int l = 0; l < n; ++l) {
