@@ -14,12 +14,6 @@
 namespace bimdf::tmesh {
 namespace {
 
-template <class T>
-void sort_unique(std::vector<T>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-}
-
 // "" when every two-gon's sides have equal lengths under `arc_length` (of T').
 std::string check_two_gons(const InflatedTMesh& inflated, const std::vector<int64_t>& arc_length) {
   for (const TwoGon& g : inflated.two_gons) {
@@ -77,8 +71,8 @@ MinOneConstraints half_arc_bounds(const TMesh& tmesh, const TMeshIncidence& inci
     if (why & 2) out.arcs.push_back(a);
     if (why & 4) out.arcs.push_back(inflated.twin[a]);
   }
-  sort_unique(out.arcs);
-  sort_unique(out.sides);
+  detail::sort_unique(out.arcs);
+  detail::sort_unique(out.sides);
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bimdf/tmesh/half_arc.hpp"
+#include "tmesh/quantize_stages.hpp"
 
 namespace bimdf::tmesh {
 namespace {
@@ -192,8 +193,7 @@ Relaxability relaxability(const TMesh& t, const TMeshIncidence& inc) {
     for (int a : arcs_along(paths[m]))
       for (int q : on_arc[a])
         if (q != m) others.push_back(q);
-    std::sort(others.begin(), others.end());
-    others.erase(std::unique(others.begin(), others.end()), others.end());
+    detail::sort_unique(others);
     return others;
   };
   r.partner.assign(paths.size(), -1);
@@ -232,10 +232,10 @@ std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incid
                                  bool crossed) {
   const Relaxability r = relaxability(tmesh, incidence);
   const auto& paths = tmesh.nonzero_paths;
-  // Per vertex: the distinct paths passing through it.
-  std::vector<std::vector<int>> through(tmesh.num_vertices());
+  // Without `crossed`, per vertex: the distinct paths passing through it.
+  std::vector<std::vector<int>> through(crossed ? 0 : tmesh.num_vertices());
   for (int m = 0; m < static_cast<int>(paths.size()); ++m)
-    if (r.representative[m] == m)
+    if (!crossed && r.representative[m] == m)
       for (int c : interior_vertices(tmesh, paths[m])) through[c].push_back(m);
   // Rule (d) among the paths that pass (a)–(c): per line to cut (a path alone, or a pair at its
   // smaller path), the lines it crosses. Lines are ranked by their arcs, not by path index, so
@@ -268,10 +268,7 @@ std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incid
     for (int x : lines)
       for (int y : lines)
         if (x != y) crosses[x].push_back(y);
-  for (auto& c : crosses) {
-    std::sort(c.begin(), c.end());
-    c.erase(std::unique(c.begin(), c.end()), c.end());
-  }
+  for (auto& c : crosses) detail::sort_unique(c);
   // A maximal set of lines crossing none of each other, greedily: the line crossing the fewest
   // lines still open first (the usual heuristic for a large independent set; a maximum one is
   // NP-hard to find in general, and not needed: every line left out keeps Algorithm 2's bounds).
@@ -348,16 +345,18 @@ InflatedTMesh inflate_two_gons(const TMesh& tmesh, const TMeshIncidence& inciden
   // Rule (d): no vertex inside two lines. Per input vertex inside a line: the line, and its
   // position along it.
   std::vector<std::array<int, 2>> inside(tmesh.num_vertices(), {-1, -1});
-  for (size_t l = 0; l < lines.size(); ++l)
-    for (size_t i = 1; i < line_half_arcs[l].size(); ++i) {
-      const int c = tmesh.half_arc_tail(line_half_arcs[l][i]);
+  for (size_t l = 0; l < lines.size(); ++l) {
+    const std::vector<int> interior = interior_vertices(tmesh, line_half_arcs[l]);
+    for (size_t k = 0; k < interior.size(); ++k) {
+      const int c = interior[k], i = static_cast<int>(k) + 1;
       if (inside[c][0] >= 0)
         throw std::invalid_argument(
             "inflate_two_gons: the lines of paths " + std::to_string(lines[inside[c][0]].paths[0]) +
             " and " + std::to_string(lines[l].paths[0]) + " cross at vertex " + std::to_string(c) +
             "; of two crossing paths at most one can be relaxed");
-      inside[c] = {static_cast<int>(l), static_cast<int>(i)};
+      inside[c] = {static_cast<int>(l), i};
     }
+  }
   InflatedTMesh out;
   TMesh& o = out.tmesh;
   o = tmesh;
