@@ -34,7 +34,8 @@ struct RequantizeCommandOptions {
   double relaxed_weight = 1;  // --relaxed-weight: cost per unit of flow turning a corner
   quant::SmoothingOptions smoothing;
   bool verbose = false;
-  OutputOptions out;  // --json, --report FILE
+  bool progress = false;  // a line on stderr per stage (tmesh::RequantizeProgress)
+  OutputOptions out;      // --json, --report FILE
 };
 
 CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& options);

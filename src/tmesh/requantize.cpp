@@ -2,7 +2,9 @@
 #include "bimdf/tmesh/requantize.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -50,7 +52,25 @@ TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
   return best;
 }
 
+// A figure for a progress report: six significant digits.
+std::string figure(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+// "1 quad", "3 quads": a count for a progress report (`plural`: the noun + "s" if empty).
+std::string counted(size_t n, const std::string& noun, const std::string& plural = "") {
+  return std::to_string(n) + " " + (n == 1 ? noun : plural.empty() ? noun + "s" : plural);
+}
+
 }  // namespace
+
+std::string progress_summary(const TMesh& tmesh) {
+  return counted(tmesh.num_patches(), "patch", "patches") + ", " +
+         counted(tmesh.num_arcs(), "arc") + ", " +
+         counted(tmesh.nonzero_paths.size(), "non-zero path");
+}
 
 std::string set_half_arc_mode(RequantizeOptions& options, const std::string& mode,
                               double reorder_weight) {
@@ -96,7 +116,15 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
   bimdf::detail::Stopwatch t;
   TracedTMesh traced = trace_tmesh(mesh, options.trace, source);
   const double trace_s = t.lap();
-  RequantizeResult r = requantize_tmesh(std::move(traced), &mesh, options, source);
+  RequantizeOptions timed = options;
+  if (options.progress) {
+    options.progress({trace_s, "traced", progress_summary(traced.tmesh)});
+    timed.progress = [&](RequantizeProgress p) {
+      p.elapsed_s += trace_s;
+      options.progress(p);
+    };
+  }
+  RequantizeResult r = requantize_tmesh(std::move(traced), &mesh, timed, source);
   r.time_trace_s = trace_s;
   return r;
 }
@@ -106,6 +134,10 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
   RequantizeResult r;
   r.traced = std::move(traced);
   bimdf::detail::Stopwatch t;
+  const auto start = std::chrono::steady_clock::now();
+  const auto report = [&](const char* stage, const std::string& detail) {
+    if (options.progress) options.progress({bimdf::detail::seconds_since(start), stage, detail});
+  };
   r.incidence = validate_tmesh(r.traced.tmesh, source);
   // The T-mesh every stage below works on: the input, or it cut open along the two-gons, whose
   // repairs and smoothing see the cuts glued (the zips close them in the collapse).
@@ -119,6 +151,9 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     r.half_arc = prepare_half_arcs(r.traced.tmesh, r.incidence, options.reorder_weight,
                                    options.keep_crossings);
     glued = glued_incidence(*r.half_arc);
+    report("half-arc", counted(r.half_arc->relaxed.size(), "non-zero path") + " cut open into " +
+                           counted(r.half_arc->inflated.two_gons.size(), "two-gon") + " (" +
+                           (options.reorder_weight >= 0 ? "bounded" : "exact") + ")");
     for (const TwoGon& g : r.half_arc->inflated.two_gons) zips.push_back(two_gon_zip(g));
     more_charts.resize(r.traced.tmesh.num_patches());
     two_gons_at.resize(r.traced.tmesh.num_patches());
@@ -151,9 +186,11 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       if (!r.half_arc->aligned[k]) two_gons.push_back(k);
     return two_gons;
   };
-  const auto align = [&](const std::vector<int>& two_gons) {
+  const auto align = [&](const std::vector<int>& two_gons, const std::string& why) {
     align_two_gons(*r.half_arc, r.traced.tmesh, r.incidence, two_gons);
     ++r.repair_rounds;
+    report("repair",
+           why + ": " + counted(two_gons.size(), "two-gon") + " held to the arc quantization");
   };
   const bool on_mesh = mesh && !tm.patch_grid.empty();
   QuantizeOptions quantize = options.quantize;
@@ -190,6 +227,15 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       r.quantization =
           calibrate ? calibrate_density(tm, base, quantize_once, options, r) : quantize_once();
       r.time_quantize_s += t.lap();
+      {
+        const TMeshQuantization& q = r.quantization;
+        std::string found(status_name(q.status));
+        if (!q.arc_length.empty())
+          found += ", objective " + figure(q.objective) + ", " + std::to_string(q.zero_arcs) +
+                   " arcs of length 0";
+        if (calibrate) found += ", density factor " + figure(r.density_factor);
+        report("quantized", found);
+      }
       if (r.quantization.arc_length.empty()) {
         if (smoothed) restore_smoothed();
         return r;
@@ -199,6 +245,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       if (add_border_loop_bounds(tm, incidence, r.quantization.arc_length,
                                  quantize.extra_constraints)) {
         ++r.repair_rounds;
+        report("repair", "a border loop shorter than 3 edges: bounded");
         continue;
       }
       try {
@@ -210,7 +257,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
         // Drift the zips cannot close (two T-mesh vertices zipped into an interior vertex of two
         // quads, say): hold the two-gons there to the arc quantization and solve again.
         if (const std::vector<int> two_gons = unaligned(e.patches(), false); !two_gons.empty()) {
-          align(two_gons);
+          align(two_gons, "the collapse could not close the two-gons");
           continue;
         }
         // The separation repairs act on a collapse that succeeded; a half-arc quantization that
@@ -218,6 +265,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
         // only, then, as the result says.
         RequantizeOptions arcs_only = options;
         arcs_only.half_arc = false;
+        report("fallback", std::string(e.what()) + ": quantizing the arcs instead");
         RequantizeResult fallback = requantize_tmesh(std::move(r.traced), mesh, arcs_only, source);
         fallback.half_arc_fallback = e.what();
         fallback.time_quantize_s += r.time_quantize_s;
@@ -225,6 +273,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
         return fallback;
       }
       r.time_collapse_s += t.lap();
+      report("collapsed", counted(r.collapsed.mesh.quads.size(), "quad"));
       // Both checks run, so that one round bounds every fault found.
       const bool merged = add_separation_bounds(tm, incidence, r.quantization.arc_length,
                                                 r.collapsed, quantize.extra_constraints);
@@ -232,6 +281,8 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                              quantize.extra_constraints);
       if (merged || folded) {
         ++r.repair_rounds;
+        report("repair", merged ? "the collapse merged separated vertices: bounded"
+                                : "a vertex lost its valence in the collapse: bounded");
         continue;
       }
       r.repair_constraints = quantize.extra_constraints;
@@ -240,8 +291,11 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
           smooth_requantized(*mesh, tm, incidence, r.traced.feature_edges, r.traced.feature_corners,
                              r.collapsed, options.smoothing, more_charts);
       r.time_smoothing_s += t.lap();
+      report("smoothed", counted(left.inverted, "quad") + " inverted, " +
+                             std::to_string(left.degenerate) + " degenerate");
       int bad = left.inverted + left.degenerate;
       if (smoothed && bad >= smoothed_bad) {
+        report("repair", "no better than before the last repair: that result kept");
         restore_smoothed();
         if (!aligning) break;
         // Aligning did not help there: no more of it; a split may still.
@@ -263,7 +317,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
           for (int f : *quads) patches.push_back(r.collapsed.mesh.quad_patch[f]);
         if (const std::vector<int> two_gons = unaligned(patches, false); !two_gons.empty()) {
           keep_smoothed();
-          align(two_gons);
+          align(two_gons, "quads smoothing did not right along two-gons");
           ++aligned_rounds;
           aligning = true;
           continue;
@@ -283,7 +337,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       // half-arc optimum's other choices may be what stretched those quads.
       if (refit && r.half_arc && aligned_rounds < options.max_split_repairs) {
         if (const std::vector<int> two_gons = unaligned({}, true); !two_gons.empty()) {
-          align(two_gons);
+          align(two_gons, "quads no split reaches");
           ++aligned_rounds;
           aligning = true;
           continue;
@@ -293,13 +347,17 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       if (refit) quantize.coarse_uniform = false;
       ++smoothed_rounds;
       ++r.repair_rounds;
+      report("repair", split ? counted(left.to_split.size(), "quad") + " split"
+                             : "quads no split reaches: the coarse lengths fitted");
     }
     if (r.half_arc && options.quantize.coarse && on_mesh && !r.collapsed.mesh.quads.empty()) {
       if (base_complex_in < 0) base_complex_in = measure_quad_mesh(*mesh).base_complex_faces;
       const std::vector<int> two_gons = unaligned({}, true);
-      if (!two_gons.empty() &&
-          measure_quad_mesh(r.collapsed.mesh).base_complex_faces > base_complex_in) {
-        align(two_gons);
+      const int base_complex =
+          two_gons.empty() ? 0 : measure_quad_mesh(r.collapsed.mesh).base_complex_faces;
+      if (!two_gons.empty() && base_complex > base_complex_in) {
+        align(two_gons, "the base complex grew (" + std::to_string(base_complex_in) + " faces to " +
+                            std::to_string(base_complex) + ")");
         smoothed.reset();
         aligning = false;
         smoothed_rounds = aligned_rounds = 0;

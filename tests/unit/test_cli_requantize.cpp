@@ -262,6 +262,59 @@ TEST_F(Requantize, SplitThatSmoothsNoBetterIsUndone) {
   EXPECT_EQ(j["metrics"]["inverted"], 1);
 }
 
+// Progress reports (RequantizeOptions::progress): one per stage, in order, timed from the
+// start. The bent strip whose split smooths no better (above): traced, solved, collapsed into
+// one quad, smoothed with it inverted, split, solved again, collapsed into two quads, smoothed
+// with one degenerate (the concave input quad), and the first result kept.
+TEST_F(Requantize, ProgressReportsEveryStage) {
+  QuadMesh bent;
+  bent.vertices = {{0, 0, 0},     {1.3, 1.6, 0},  {0.2, 2.9, 0},
+                   {0.5, 1.9, 0}, {0.1, 1.25, 0}, {0, 1, 0}};
+  bent.quads = {{0, 1, 4, 5}, {1, 2, 3, 4}};
+  tmesh::RequantizeOptions options;
+  options.trace.density = 0.5;
+  std::vector<tmesh::RequantizeProgress> reports;
+  options.progress = [&](const tmesh::RequantizeProgress& p) { reports.push_back(p); };
+  const tmesh::RequantizeResult r = tmesh::requantize(bent, options, "bent");
+  ASSERT_EQ(r.collapsed.mesh.num_quads(), 1);
+  std::vector<std::string> stages, details;
+  for (const auto& p : reports) stages.push_back(p.stage), details.push_back(p.detail);
+  EXPECT_EQ(stages,
+            (std::vector<std::string>{"traced", "quantized", "collapsed", "smoothed", "repair",
+                                      "quantized", "collapsed", "smoothed", "repair"}));
+  ASSERT_EQ(details.size(), 9u);
+  const tmesh::TMesh& t = r.traced.tmesh;
+  EXPECT_EQ(details[0], std::to_string(t.num_patches()) + " patch" +
+                            (t.num_patches() == 1 ? "" : "es") + ", " +
+                            std::to_string(t.num_arcs()) + " arcs, " +
+                            std::to_string(t.nonzero_paths.size()) + " non-zero paths");
+  EXPECT_EQ(details[1].rfind("optimal, objective ", 0), 0u) << details[1];
+  EXPECT_EQ(details[2], "1 quad");
+  EXPECT_EQ(details[3], "1 quad inverted, 0 degenerate");
+  EXPECT_EQ(details[4], "1 quad split");
+  EXPECT_EQ(details[6], "2 quads");
+  EXPECT_EQ(details[7], "0 quads inverted, 1 degenerate");
+  EXPECT_EQ(details[8], "no better than before the last repair: that result kept");
+  for (size_t i = 1; i < reports.size(); ++i)
+    EXPECT_GE(reports[i].elapsed_s, reports[i - 1].elapsed_s) << i;
+
+  // The CLI prints them on stderr, its JSON report on stdout untouched.
+  const std::string in = write_mesh("in.obj", bent);
+  const CliRun cli =
+      run("requantize " + in + " -o " + path("out.obj") + " --json --progress --scale 2");
+  ASSERT_EQ(cli.exit_code, 0) << cli.err;
+  EXPECT_EQ(json::parse(cli.out)["quads"], 1);
+  std::istringstream lines(cli.err);
+  std::vector<std::string> printed;
+  for (std::string line; std::getline(lines, line);) {
+    ASSERT_EQ(line.rfind("progress ", 0), 0u) << line;
+    printed.push_back(line.substr(line.find(" s: ") + 4));
+  }
+  ASSERT_EQ(printed.size(), 9u) << cli.err;
+  EXPECT_EQ(printed[3], "smoothed: 1 quad inverted, 0 degenerate");
+  EXPECT_EQ(printed[8], "repair: no better than before the last repair: that result kept");
+}
+
 TEST_F(Requantize, ThinStripCollapses) {
   const QuadMesh mesh = test::thin_strip_mesh();
   const json j = requantize(mesh, "--scale 2");

@@ -3,6 +3,7 @@
 // tessellation (collapse.hpp), smoothing on the input surface with features and border kept.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,15 @@
 #include "bimdf/tmesh/quantize.hpp"
 
 namespace bimdf::tmesh {
+
+// One progress report of requantize (RequantizeOptions::progress): a stage has just ended.
+struct RequantizeProgress {
+  double elapsed_s = 0;  // since requantize (or requantize_tmesh) began
+  // "traced", "half-arc" (the cut), "quantized", "collapsed", "smoothed", "repair" (what was
+  // found and what is done about it: a solve again follows), "fallback" (half-arc given up).
+  std::string stage;
+  std::string detail;  // what the stage found, in words and figures
+};
 
 struct RequantizeOptions {
   TraceOptions trace;  // density, features
@@ -55,6 +65,9 @@ struct RequantizeOptions {
   // two sides at one of its vertices costing this much (HalfArcSetup::reorder_weight).
   double reorder_weight = -1;
   bool keep_crossings = false;  // HalfArcSetup::keep_crossings (bounded only)
+  // Called after every stage (RequantizeProgress) on the calling thread; empty: none. A coarse
+  // exact half-arc run on a large layout can take minutes of repairs, which this shows.
+  std::function<void(const RequantizeProgress&)> progress;
 };
 
 struct RequantizeResult {
@@ -103,6 +116,9 @@ inline constexpr double kDefaultCoarseMaxAngle = 20;
 // name.
 std::string set_half_arc_mode(RequantizeOptions& options, const std::string& mode,
                               double reorder_weight = 1);
+
+// "12 patches, 40 arcs, 9 non-zero paths": the T-mesh in a progress report ("traced").
+std::string progress_summary(const TMesh& tmesh);
 
 // The mean length of the mesh's edges (each counted once per quad side); 0 without quads.
 double mean_edge_length(const QuadMesh& mesh);
