@@ -18,8 +18,8 @@
 // for a path that (a) runs along two or more arcs, none on the border or a feature curve (whose
 // two sides the smoothing keeps apart, and across whose sharp edge T-junctions should not
 // trade places: relaxed, they left degenerate quads on 10 of 17 shared layouts at 35°, see
-// docs/benchmarks.md), (b) is straight at each interior vertex (180° on either side: no patch corner,
-// or two, on each side), (c) shares no arc with another path — except that two paths
+// docs/benchmarks.md), (b) is straight at each interior vertex (180° on either side: no patch
+// corner, or two, on each side), (c) shares no arc with another path — except that two paths
 // overlapping partially along one line (each reaching past the other's end, sharing arcs with
 // each other only) are relaxed together, as one two-gon along their union — and (d) crosses no
 // other relaxed line. §4.3 stacks the second path's two-gon on the first one's: each path's
