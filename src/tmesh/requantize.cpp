@@ -187,10 +187,10 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     return two_gons;
   };
   const auto align = [&](const std::vector<int>& two_gons, const std::string& why) {
-    align_two_gons(*r.half_arc, r.traced.tmesh, r.incidence, two_gons);
+    // `two_gons` may repeat one (once per patch it runs along): count those aligned now.
+    const int aligned = align_two_gons(*r.half_arc, r.traced.tmesh, r.incidence, two_gons);
     ++r.repair_rounds;
-    report("repair",
-           why + ": " + counted(two_gons.size(), "two-gon") + " held to the arc quantization");
+    report("repair", why + ": " + counted(aligned, "two-gon") + " held to the arc quantization");
   };
   const bool on_mesh = mesh && !tm.patch_grid.empty();
   QuantizeOptions quantize = options.quantize;
