@@ -54,7 +54,7 @@ std::vector<detail::Vec3> tangent_probes(const std::array<detail::Vec3, 2>& fram
   return probes;
 }
 
-// The point of a mesh polyline closest to p (face −1).
+// The point of a mesh polyline closest to p (face −1) and its distance (−1: no segment).
 detail::TriangleTree::Hit closest_on_polyline(const Layout& layout, const std::vector<int>& chain,
                                               const std::array<double, 3>& p) {
   detail::TriangleTree::Hit best;
@@ -72,6 +72,8 @@ detail::TriangleTree::Hit closest_on_polyline(const Layout& layout, const std::v
       q[d] = a[d] + t * (b[d] - a[d]), d2 += (q[d] - p[d]) * (q[d] - p[d]);
     if (best.distance < 0 || d2 < best.distance) best = {-1, q, d2};
   }
+  // A distance, as TriangleTree::closest gives, so that project() compares like with like.
+  if (best.distance > 0) best.distance = std::sqrt(best.distance);
   return best;
 }
 
