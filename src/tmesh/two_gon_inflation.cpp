@@ -233,10 +233,13 @@ std::vector<int> relaxable_paths(const TMesh& tmesh, const TMeshIncidence& incid
   const Relaxability r = relaxability(tmesh, incidence);
   const auto& paths = tmesh.nonzero_paths;
   // Without `crossed`, per vertex: the distinct paths passing through it.
-  std::vector<std::vector<int>> through(crossed ? 0 : tmesh.num_vertices());
-  for (int m = 0; m < static_cast<int>(paths.size()); ++m)
-    if (!crossed && r.representative[m] == m)
-      for (int c : interior_vertices(tmesh, paths[m])) through[c].push_back(m);
+  std::vector<std::vector<int>> through;
+  if (!crossed) {
+    through.resize(tmesh.num_vertices());
+    for (int m = 0; m < static_cast<int>(paths.size()); ++m)
+      if (r.representative[m] == m)
+        for (int c : interior_vertices(tmesh, paths[m])) through[c].push_back(m);
+  }
   // Rule (d) among the paths that pass (a)–(c): per line to cut (a path alone, or a pair at its
   // smaller path), the lines it crosses. Lines are ranked by their arcs, not by path index, so
   // that the choice does not depend on the order of the paths.
