@@ -230,15 +230,21 @@ TEST_F(Requantize, SplitsInvertedQuadsButNotTheInputs) {
   EXPECT_EQ(j["repair_rounds"], 0);
 }
 
+// The bent strip (above) with its second quad concave at its pinned border corner.
+QuadMesh concave_bent_strip() {
+  QuadMesh bent;
+  bent.vertices = {{0, 0, 0},     {1.3, 1.6, 0},  {0.2, 2.9, 0},
+                   {0.5, 1.9, 0}, {0.1, 1.25, 0}, {0, 1, 0}};
+  bent.quads = {{0, 1, 4, 5}, {1, 2, 3, 4}};
+  return bent;
+}
+
 // A split that smooths no better is undone. The bent strip's second quad is concave at its
 // pinned border corner (inverted in the input). At --scale 2 the two merge into one inverted
 // quad, which is not an input quad, so the repair splits it — into the two input quads, the
 // concave one still inverted: as many inverted as before, and the one quad is restored.
 TEST_F(Requantize, SplitThatSmoothsNoBetterIsUndone) {
-  QuadMesh bent;
-  bent.vertices = {{0, 0, 0},     {1.3, 1.6, 0},  {0.2, 2.9, 0},
-                   {0.5, 1.9, 0}, {0.1, 1.25, 0}, {0, 1, 0}};
-  bent.quads = {{0, 1, 4, 5}, {1, 2, 3, 4}};
+  const QuadMesh bent = concave_bent_strip();
   ASSERT_GT(detail::scaled_jacobian(bent, bent.quads[0]), 0.3);
   ASSERT_LT(detail::scaled_jacobian(bent, bent.quads[1]), -0.3);
   tmesh::RequantizeOptions options;
@@ -267,10 +273,7 @@ TEST_F(Requantize, SplitThatSmoothsNoBetterIsUndone) {
 // one quad, smoothed with it inverted, split, solved again, collapsed into two quads, smoothed
 // with one degenerate (the concave input quad), and the first result kept.
 TEST_F(Requantize, ProgressReportsEveryStage) {
-  QuadMesh bent;
-  bent.vertices = {{0, 0, 0},     {1.3, 1.6, 0},  {0.2, 2.9, 0},
-                   {0.5, 1.9, 0}, {0.1, 1.25, 0}, {0, 1, 0}};
-  bent.quads = {{0, 1, 4, 5}, {1, 2, 3, 4}};
+  const QuadMesh bent = concave_bent_strip();
   tmesh::RequantizeOptions options;
   options.trace.density = 0.5;
   std::vector<tmesh::RequantizeProgress> reports;
