@@ -119,6 +119,7 @@ void BlossomMatching::scan_plus(int b) {
     const int64_t yu = dual_in(u, self);
     for (int k = adj_start_[u]; k < adj_start_[u + 1]; ++k) {
       const int e = adj_edge_[k], v = other(e, u);
+      if (!enabled_[e]) continue;
       const int bv = top_of(v);
       if (bv == self || top_[bv].label == kMinus) continue;
       const int64_t s = yu + dual_in(v, bv) - w2_[e];
@@ -142,7 +143,9 @@ void BlossomMatching::push_edge_events_towards(int b) {
   for (int v : scratch_) {
     const int64_t yv = dual_in(v, b);
     for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k) {
-      const int e = adj_edge_[k], u = other(e, v), bu = top_of(u);
+      const int e = adj_edge_[k];
+      if (!enabled_[e]) continue;
+      const int u = other(e, v), bu = top_of(u);
       if (top_[bu].label != kPlus) continue;
       const int64_t time = now_ + yv + dual_in(u, bu) - w2_[e];
       if (time < earliest) earliest = time, best = e;
@@ -393,8 +396,10 @@ bool BlossomMatching::grow_forest() {
   now_ = 0;
   int64_t free_vertices = std::count(mate_.begin(), mate_.end(), -1);
   tree_tops_.assign(free_vertices, {});
+  // A free vertex is the base of its top blossom (a resumed run keeps blossoms): that top
+  // roots the tree.
   for (int v = 0, tree = 0; v < n_; ++v)
-    if (mate_[v] < 0) set_label(v, kPlus, -1, -1, -1, tree++);
+    if (mate_[v] < 0) set_label(top_of(v), kPlus, -1, -1, -1, tree++);
   free_after_start_ = free_vertices;
   while (free_vertices > 0 && !heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());

@@ -11,9 +11,9 @@
 // edge between positive blossoms becomes tight, an unlabeled blossom can first be grown into
 // a tree (one event per blossom, its earliest edge) or a negative blossom's z reaches 0 sit in
 // a priority queue, and a vertex's dual is its stored value plus its top blossom's offset plus
-// the change since that blossom was labeled (lazy duals). A tight edge between two trees augments (both trees are
-// taken apart), inside one tree it forms a blossom; blossoms outlive the trees. A new blossom
-// keeps its largest child's vertices as they are and rebases only the others, so nested
+// the change since that blossom was labeled (lazy duals). A tight edge between two trees augments
+// (both trees are taken apart), inside one tree it forms a blossom; blossoms outlive the trees. A
+// new blossom keeps its largest child's vertices as they are and rebases only the others, so nested
 // blossoms cost their smaller parts; tops are found through path-compressed jumps.
 //
 // Warm start: `initial_duals` and `initial_matching` may be anything. Duals are first raised
@@ -21,6 +21,22 @@
 // greedily any tight edge) are kept, so a bad start costs time, never correctness. From the
 // LP relaxation's duals and integral flow (refinement, solve/refine.cpp) only a few hundred of
 // ~10^5 vertices stay free.
+//
+// Re-optimization: after run() returned Optimal the solver keeps its matching, duals and
+// blossoms, and `update_edge` / `reopen` followed by run() solve the changed problem from them
+// (refinement's persistent rounds, solve/persistent_rounds.hpp). The vertices reopened — those
+// asked for and both ends of every updated edge — leave every blossom that holds them (a
+// blossom's z moves onto its vertices' duals, z/2 each, which keeps every edge inside it as
+// tight as before), and lose their matched edge; their duals are set as low as their edges
+// allow. Everything else keeps its state, so the trees grow from the reopened vertices (and
+// the partners they freed) only, and a change that leaves the optimum near the old one is a
+// local search. Dual parity: the algorithm needs all duals even at a start (above), but a run
+// ends with the duals of vertices labeled at different times of mixed parity, and a dissolved
+// blossom's z/2 may be odd. Duals are uniform in parity per top blossom, and a matched edge
+// joins two tops of equal parity, so each odd top is moved by ±1 (its z by ∓2, after blossoms
+// of z = 0 are expanded), one down and its partner up, which keeps their matched edge tight;
+// a down move that would take an edge to another moved top below feasibility is turned up,
+// and a pair that cannot be moved either way is unmatched (both up).
 //
 // Guarantee: `run()` returns Optimal only after checking the certificate — a perfect matching,
 // feasible duals, tight matched edges, and every blossom with z > 0 holding ⌊|B|/2⌋ matched
@@ -53,7 +69,16 @@ class BlossomMatching {
   // made feasible, or that touch an already matched vertex, are dropped.
   BlossomMatching& initial_matching(std::span<const char> matched);
 
+  // Solves from the start given above, or — after a run that returned Optimal — from that
+  // run's solution, re-opened where `update_edge` and `reopen` asked (see above).
   Status run();
+
+  // Before a run: edge e gets weight `weight` (overflow bound as in the constructor;
+  // std::invalid_argument otherwise) and is part of the graph iff `enabled` (a disabled edge is
+  // never matched and needs no dual feasibility). After an Optimal run both ends are reopened.
+  BlossomMatching& update_edge(int e, int64_t weight, bool enabled = true);
+  // After an Optimal run: the next run re-opens vertex v (leaves its blossoms and its mate).
+  BlossomMatching& reopen(int v);
 
   Status status() const { return status_; }
   // After Optimal: per edge, 1 if matched.
@@ -95,11 +120,18 @@ class BlossomMatching {
   int tree_parent(int b);
   int new_blossom_id();
   void start();
+  void resume();
+  void dissolve_top(int b);
+  void shift_parity();
   bool certificate_holds();
 
   int n_;
   std::vector<int> end_a_, end_b_;
-  std::vector<int64_t> w2_;  // doubled weights
+  std::vector<int64_t> w2_;    // doubled weights
+  std::vector<char> enabled_;  // per edge: part of the graph (update_edge)
+  uint64_t weight_bound_ = 0;  // |w| must stay below this (the overflow bound above)
+  bool kept_ = false;          // the last run was Optimal: the next one resumes from it
+  std::vector<int> reopened_;  // asked for since (update_edge, reopen)
   std::vector<int> adj_start_, adj_edge_;
   // Doubled dual of vertex v: y_[v] + top_[t].off for its top blossom t + the change since t
   // was labeled.

@@ -18,9 +18,11 @@ BlossomMatching::BlossomMatching(int num_nodes, std::span<const int> end_a,
   uint64_t largest = 0;  // unsigned: |INT64_MIN| fits
   for (int64_t w : weight)
     largest = std::max(largest, w < 0 ? uint64_t{0} - static_cast<uint64_t>(w) : uint64_t(w));
-  if (largest >= (uint64_t{1} << 58) / (uint64_t(num_nodes) + 1))
+  weight_bound_ = (uint64_t{1} << 58) / (uint64_t(num_nodes) + 1);
+  if (largest >= weight_bound_)
     throw std::invalid_argument("blossom matching: |weight| * (nodes + 1) must stay below 2^58");
   w2_.resize(m);
+  enabled_.assign(m, 1);
   adj_start_.assign(n_ + 1, 0);
   for (size_t e = 0; e < m; ++e) {
     const int a = end_a_[e], b = end_b_[e];
@@ -87,6 +89,8 @@ void BlossomMatching::start() {
   free_ids_.clear();
 
   const bool given = static_cast<int>(y_.size()) == n_;
+  // Even, as the algorithm needs (a run that found no perfect matching may leave odd ones).
+  for (int64_t& y : y_) y += y & 1;
   if (!given) {
     // y_v = max incident w makes every edge feasible; then lower each y_v as far as its edges
     // allow, so every vertex has a tight edge for the greedy matching below.
@@ -94,7 +98,7 @@ void BlossomMatching::start() {
     for (int v = 0; v < n_; ++v) {
       int64_t best = std::numeric_limits<int64_t>::min();
       for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k)
-        best = std::max(best, w2_[adj_edge_[k]] / 2);
+        if (enabled_[adj_edge_[k]]) best = std::max(best, w2_[adj_edge_[k]] / 2);
       // Even, like every dual the start hands over: then all trees share their duals' parity
       // and every dual change is an integer (see the header).
       if (best != std::numeric_limits<int64_t>::min()) y_[v] = best + (best & 1);
@@ -102,23 +106,23 @@ void BlossomMatching::start() {
   }
   for (int e = 0; e < m; ++e) {
     const int64_t deficit = w2_[e] - y_[end_a_[e]] - y_[end_b_[e]];
-    if (deficit > 0) y_[end_a_[e]] += deficit;
+    if (enabled_[e] && deficit > 0) y_[end_a_[e]] += deficit;
   }
   if (!given) {
     for (int v = 0; v < n_; ++v) {
-      if (adj_start_[v] == adj_start_[v + 1]) continue;
       int64_t need = std::numeric_limits<int64_t>::min();
       for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k) {
         const int e = adj_edge_[k];
-        need = std::max(need, w2_[e] - y_[other(e, v)]);
+        if (enabled_[e]) need = std::max(need, w2_[e] - y_[other(e, v)]);
       }
-      y_[v] = need;
+      if (need != std::numeric_limits<int64_t>::min()) y_[v] = need;
     }
   }
   mate_.assign(n_, -1);
   auto try_match = [&](int e) {
     const int a = end_a_[e], b = end_b_[e];
-    if (mate_[a] < 0 && mate_[b] < 0 && y_[a] + y_[b] == w2_[e]) mate_[a] = mate_[b] = e;
+    if (enabled_[e] && mate_[a] < 0 && mate_[b] < 0 && y_[a] + y_[b] == w2_[e])
+      mate_[a] = mate_[b] = e;
   };
   if (static_cast<int>(start_match_.size()) == m)
     for (int e = 0; e < m; ++e)
@@ -127,10 +131,17 @@ void BlossomMatching::start() {
 }
 
 BlossomMatching::Status BlossomMatching::run() {
-  start();
+  if (kept_) {
+    kept_ = false;  // a throw below leaves no state to resume from
+    resume();
+  } else {
+    start();
+  }
+  reopened_.clear();
   if (!grow_forest()) return status_ = Status::NoPerfectMatching;
   if (!certificate_holds())
     throw std::logic_error("blossom matching: the optimality certificate does not hold");
+  kept_ = true;
   return status_ = Status::Optimal;
 }
 
@@ -223,7 +234,8 @@ bool BlossomMatching::certificate_holds() {
     const int u = end_a_[e], v = end_b_[e];
     // Every z is ≥ 0 (checked above), so an unmatched edge feasible on the vertex duals alone
     // is feasible whatever blossoms hold both ends: no need to find them.
-    if (mate_[u] != e && y[u] + y[v] >= w2_[e]) continue;
+    if (mate_[u] != e && (!enabled_[e] || y[u] + y[v] >= w2_[e])) continue;
+    if (!enabled_[e]) return false;  // a disabled edge matched
     const int common = top[u] == top[v] ? lowest_common(u, v) : -1;
     const int64_t s = y[u] + y[v] + (common >= 0 ? z_down[common] : 0) - w2_[e];
     if (s < 0 || (mate_[u] == e && s != 0)) return false;

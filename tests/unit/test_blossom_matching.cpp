@@ -16,6 +16,7 @@
 #include "backend/perfect_matching.hpp"
 #include "bimdf/problem.hpp"
 #include "bimdf/solve.hpp"
+#include "matching_test_support.hpp"
 #include "random_problem.hpp"
 #include "reduce/bmatching.hpp"
 #include "reduce/matching_gadgets.hpp"
@@ -24,68 +25,10 @@
 namespace {
 
 using bimdf::detail::BlossomMatching;
-
-struct Graph {
-  int n = 0;
-  std::vector<int> a, b;
-  std::vector<int64_t> w;
-};
-
-// Largest weight over all perfect matchings, or nullopt: vertex 0 (the lowest unmatched) tries
-// every partner.
-std::optional<int64_t> brute_force(const Graph& g) {
-  std::vector<char> used(g.n, 0);
-  std::optional<int64_t> best;
-  std::function<void(int64_t)> go = [&](int64_t sum) {
-    int v = 0;
-    while (v < g.n && used[v]) ++v;
-    if (v == g.n) {
-      if (!best || sum > *best) best = sum;
-      return;
-    }
-    used[v] = 1;
-    for (size_t e = 0; e < g.a.size(); ++e) {
-      const int u = g.a[e] == v ? g.b[e] : g.b[e] == v ? g.a[e] : -1;
-      if (u < 0 || used[u]) continue;
-      used[u] = 1;
-      go(sum + g.w[e]);
-      used[u] = 0;
-    }
-    used[v] = 0;
-  };
-  go(0);
-  return best;
-}
-
-Graph random_graph(std::mt19937& rng, int n, int m, int max_weight) {
-  Graph g;
-  g.n = n;
-  for (int k = 0; k < m; ++k) {
-    const int a = static_cast<int>(rng() % n), b = static_cast<int>(rng() % n);
-    if (a == b) continue;
-    g.a.push_back(a);
-    g.b.push_back(b);
-    g.w.push_back(static_cast<int64_t>(rng() % (2 * max_weight + 1)) - max_weight);
-  }
-  return g;
-}
-
-// Runs the solver; checks that the matching is perfect and returns its weight.
-std::optional<int64_t> solve(const Graph& g, BlossomMatching& solver) {
-  if (solver.run() != BlossomMatching::Status::Optimal) return std::nullopt;
-  const std::vector<char> matched = solver.matched_edges();
-  std::vector<int> degree(g.n, 0);
-  int64_t sum = 0;
-  for (size_t e = 0; e < matched.size(); ++e)
-    if (matched[e]) {
-      ++degree[g.a[e]];
-      ++degree[g.b[e]];
-      sum += g.w[e];
-    }
-  for (int v = 0; v < g.n; ++v) EXPECT_EQ(degree[v], 1) << "vertex " << v;
-  EXPECT_EQ(sum, solver.matching_weight());
-  return sum;
-}
+using bimdf::testing::brute_force;
+using bimdf::testing::Graph;
+using bimdf::testing::random_graph;
+using bimdf::testing::solve;
 
 TEST(BlossomMatching, EqualsEnumerationOnSmallGraphsFromAnyStart) {
   std::mt19937 rng(7);
@@ -127,12 +70,7 @@ TEST(BlossomMatching, EqualsLemonOnLargerGraphs) {
       g.b.push_back(v + 1);
       g.w.push_back(static_cast<int64_t>(rng() % 2001) - 1000);
     }
-    bimdf::detail::MatchingGraph mg;
-    mg.num_nodes = g.n;
-    mg.end_a = g.a;
-    mg.end_b = g.b;
-    for (int64_t w : g.w) mg.weight.push_back(static_cast<double>(w));
-    const std::optional<std::vector<char>> lemon = bimdf::detail::max_weight_perfect_matching(mg);
+    const std::optional<int64_t> lemon = bimdf::testing::lemon_optimum(g);
     BlossomMatching solver(g.n, g.a, g.b, g.w);
     if (it % 2 == 1) {  // warm starts: many blossoms, expansions and reused ids
       std::vector<int64_t> y(g.n);
@@ -147,9 +85,7 @@ TEST(BlossomMatching, EqualsLemonOnLargerGraphs) {
       ++infeasible;
       continue;
     }
-    int64_t lemon_weight = 0;
-    for (size_t e = 0; e < g.w.size(); ++e) lemon_weight += (*lemon)[e] ? g.w[e] : 0;
-    EXPECT_EQ(*got, lemon_weight) << "case " << it;
+    EXPECT_EQ(*got, *lemon) << "case " << it;
   }
   EXPECT_GT(infeasible, 5);
   EXPECT_LT(infeasible, 60);
@@ -203,14 +139,7 @@ TEST(BlossomMatching, ReportsGraphsWithoutPerfectMatching) {
 }
 
 TEST(BlossomMatching, RejectsBadInputWithAMessage) {
-  auto message = [](auto make) {
-    try {
-      make();
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("no exception");
-  };
+  auto message = [](auto make) { return bimdf::testing::invalid_argument_message(make); };
   const std::vector<int> a{0, 1}, b{1, 1};
   const std::vector<int64_t> w{1, 1};
   EXPECT_EQ(message([&] { BlossomMatching(2, a, b, w); }),
