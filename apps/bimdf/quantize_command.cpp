@@ -103,8 +103,8 @@ void add_quantize_options(CLI::App* cmd, QuantizeCommandOptions& o) {
       ->check(whole_number_from(1, 256));
   add_matching_option(cmd, o.quantize.matching,
                       "Perfect matching solver of the exact solves: lemon (the optimum the "
-                      "remesh results were measured with) or blossom (faster; may pick another "
-                      "optimum)");
+                      "remesh results were measured with), blossom (faster; may pick another "
+                      "optimum) or persistent (experimental; slower so far)");
   cmd->add_option("--time-limit", o.quantize.time_limit,
                   "Seconds per solve; then the best quantization found (default: none)")
       ->check(positive_number());

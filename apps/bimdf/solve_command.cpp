@@ -137,11 +137,18 @@ std::string human_report(const Solution& s, bool exact, bool verbose) {
                             " of them handed to the network simplex), " +
                             stat_text(s, "min_cost_flows_cold") + " from scratch");
     if (exact)
-      line("matching", "largest " + stat_text(s, "matching_nodes_max") + " nodes, " +
-                           stat_text(s, "matching_edges_max") + " edges; " +
-                           stat_text(s, "matching_free_after_warm_start") +
-                           " vertices left free by the warm starts, " +
-                           stat_text(s, "matching_lemon_fallbacks") + " fallbacks to LEMON");
+      line("matching",
+           "largest " + stat_text(s, "matching_nodes_max") + " nodes, " +
+               stat_text(s, "matching_edges_max") + " edges; " +
+               stat_text(s, "matching_free_after_warm_start") +
+               " vertices left free by the warm starts, " +
+               stat_text(s, "matching_lemon_fallbacks") + " fallbacks to LEMON" +
+               (stat_text(s, "matchings_resumed") != "0" ||
+                        stat_text(s, "matching_persistent_fallbacks") != "0"
+                    ? "; " + stat_text(s, "matchings_resumed") +
+                          " resumed from the previous round's, " +
+                          stat_text(s, "matching_persistent_fallbacks") + " persistent fallbacks"
+                    : ""));
   }
   return t;
 }
@@ -179,7 +186,9 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   cmd->add_flag("--no-lower-bound", o.no_lower_bound, "Skip the LP-relaxation lower bound");
   add_matching_option(cmd, o.matching,
                       "Perfect matching solver of the refinement: blossom (bimdf's own, "
-                      "warm-started) or lemon (LEMON's, from scratch; a cross-check)");
+                      "warm-started), lemon (LEMON's, from scratch; a cross-check) or "
+                      "persistent (experimental: one blossom matching kept across rounds; "
+                      "slower so far)");
   cmd->add_flag("-v,--verbose", o.verbose, "Print sizes and the time of every stage");
   cmd->add_flag("--progress", o.progress,
                 "Print a line on standard error after each component's approximation and each "
@@ -193,10 +202,12 @@ void add_matching_option(CLI::App* cmd, MatchingBackend& backend, const std::str
   cmd->add_option_function<std::string>(
          "--matching",
          [&backend](const std::string& name) {
-           backend = name == "lemon" ? MatchingBackend::Lemon : MatchingBackend::Blossom;
+           backend = name == "lemon"        ? MatchingBackend::Lemon
+                     : name == "persistent" ? MatchingBackend::Persistent
+                                            : MatchingBackend::Blossom;
          },
          description)
-      ->check(CLI::IsMember({"blossom", "lemon"}))
+      ->check(CLI::IsMember({"blossom", "lemon", "persistent"}))
       ->default_str(backend == MatchingBackend::Blossom ? "blossom" : "lemon");
 }
 

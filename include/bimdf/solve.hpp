@@ -57,6 +57,10 @@ enum class DoubleCoverMode {
 enum class MatchingBackend {
   Blossom,  // bimdf's own, warm-started from each round's LP relaxation (default)
   Lemon,    // LEMON's MaxWeightedPerfectMatching from scratch: slower, kept as a cross-check
+  // Experimental: one blossom matching kept across all rounds and re-optimized where the last
+  // round changed the flow, no LP after the first round (solve/persistent_rounds.hpp). Exact,
+  // but slower than Blossom on every instance measured so far (docs/benchmarks.md).
+  Persistent,
 };
 
 // One progress report of Solver::run() (see Solver::progress).

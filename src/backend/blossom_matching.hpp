@@ -25,18 +25,19 @@
 // Re-optimization: after run() returned Optimal the solver keeps its matching, duals and
 // blossoms, and `update_edge` / `reopen` followed by run() solve the changed problem from them
 // (refinement's persistent rounds, solve/persistent_rounds.hpp). The vertices reopened — those
-// asked for and both ends of every updated edge — leave every blossom that holds them (a
-// blossom's z moves onto its vertices' duals, z/2 each, which keeps every edge inside it as
-// tight as before), and lose their matched edge; their duals are set as low as their edges
-// allow. Everything else keeps its state, so the trees grow from the reopened vertices (and
-// the partners they freed) only, and a change that leaves the optimum near the old one is a
-// local search. Dual parity: the algorithm needs all duals even at a start (above), but a run
-// ends with the duals of vertices labeled at different times of mixed parity, and a dissolved
-// blossom's z/2 may be odd. Duals are uniform in parity per top blossom, and a matched edge
-// joins two tops of equal parity, so each odd top is moved by ±1 (its z by ∓2, after blossoms
-// of z = 0 are expanded), one down and its partner up, which keeps their matched edge tight;
-// a down move that would take an edge to another moved top below feasibility is turned up,
-// and a pair that cannot be moved either way is unmatched (both up).
+// asked for, and an end of each updated edge that has none — leave every blossom that holds
+// them (a blossom's z moves onto its vertices' duals, z/2 each, which keeps every edge inside
+// it as tight as before) and lose their matched edge; their duals are set as low as their
+// edges allow. Everything else keeps its state, and the trees grow from the reopened vertices
+// and the partners they freed only. (Measured: this is not yet a local search — a dissolved
+// blossom's z/2 can be as large as the whole dual change of a fresh run, which the trees then
+// have to make up; docs/benchmarks.md.) Dual parity: the algorithm needs all duals even at a
+// start (above), but a run ends with the duals of vertices labeled at different times of
+// mixed parity, and a dissolved blossom's z/2 may be odd. Duals are uniform in parity per top
+// blossom, and a matched edge joins two tops of equal parity, so each odd top is moved by ±1
+// (its z by ∓2, after blossoms of z = 0 are expanded), one of each matched pair down and the
+// other up, which keeps their edge tight; which one goes down is a 2-SAT problem (no tight
+// edge between two tops that both go down), and a pair it cannot place is unmatched (both up).
 //
 // Guarantee: `run()` returns Optimal only after checking the certificate — a perfect matching,
 // feasible duals, tight matched edges, and every blossom with z > 0 holding ⌊|B|/2⌋ matched
@@ -75,7 +76,8 @@ class BlossomMatching {
 
   // Before a run: edge e gets weight `weight` (overflow bound as in the constructor;
   // std::invalid_argument otherwise) and is part of the graph iff `enabled` (a disabled edge is
-  // never matched and needs no dual feasibility). After an Optimal run both ends are reopened.
+  // never matched and needs no dual feasibility). After an Optimal run one of its ends is
+  // reopened — the one `reopen` names, else end_a — since its dual must meet the new weight.
   BlossomMatching& update_edge(int e, int64_t weight, bool enabled = true);
   // After an Optimal run: the next run re-opens vertex v (leaves its blossoms and its mate).
   BlossomMatching& reopen(int v);
@@ -131,7 +133,8 @@ class BlossomMatching {
   std::vector<char> enabled_;  // per edge: part of the graph (update_edge)
   uint64_t weight_bound_ = 0;  // |w| must stay below this (the overflow bound above)
   bool kept_ = false;          // the last run was Optimal: the next one resumes from it
-  std::vector<int> reopened_;  // asked for since (update_edge, reopen)
+  std::vector<int> reopened_;  // asked for since (reopen)
+  std::vector<int> updated_;   // edges updated since (update_edge)
   std::vector<int> adj_start_, adj_edge_;
   // Doubled dual of vertex v: y_[v] + top_[t].off for its top blossom t + the change since t
   // was labeled.

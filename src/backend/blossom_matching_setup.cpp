@@ -138,6 +138,7 @@ BlossomMatching::Status BlossomMatching::run() {
     start();
   }
   reopened_.clear();
+  updated_.clear();
   if (!grow_forest()) return status_ = Status::NoPerfectMatching;
   if (!certificate_holds())
     throw std::logic_error("blossom matching: the optimality certificate does not hold");

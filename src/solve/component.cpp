@@ -102,6 +102,8 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
     r.matching_edges = refined.matching_edges;
     r.matching_free_vertices = refined.matching_free_vertices;
     r.lemon_fallbacks = refined.lemon_fallbacks;
+    r.resumed_matchings = refined.resumed_matchings;
+    r.persistent_fallbacks = refined.persistent_fallbacks;
     r.min_cost_flows.add(refined.lps);
     r.time_refine_build_s = refined.time_build_s;
     r.time_matching_s = refined.time_matching_s;

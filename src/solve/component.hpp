@@ -36,6 +36,7 @@ struct ComponentResult {
   int attempts = 0;
   int64_t matching_nodes = 0, matching_edges = 0;
   int64_t matching_free_vertices = 0, lemon_fallbacks = 0;  // refine.hpp
+  int64_t resumed_matchings = 0, persistent_fallbacks = 0;  // refine.hpp
   MinCostFlowTally min_cost_flows;  // of the approximation and refinement's LPs
   double time_simplify_s = 0, time_lp_guess_s = 0, time_parity_s = 0, time_linearize_s = 0,
          time_mcf_s = 0;

@@ -132,7 +132,8 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
   std::set<std::string> uncovered_paths;
   int64_t attempts = 0, nodes_solved = 0, edges_solved = 0, rounds = 0, rounds_max = 0,
           matchings = 0;
-  int64_t matching_nodes = 0, matching_edges = 0, matching_free_vertices = 0, lemon_fallbacks = 0;
+  int64_t matching_nodes = 0, matching_edges = 0, matching_free_vertices = 0, lemon_fallbacks = 0,
+          resumed_matchings = 0, persistent_fallbacks = 0;
   MinCostFlowTally min_cost_flows;
   double approximate_objective = 0, lower_bound = 0;
   double t_simplify = 0, t_lp_guess = 0, t_parity = 0, t_linearize = 0, t_mcf = 0, t_build = 0,
@@ -151,6 +152,8 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
     matching_edges = std::max(matching_edges, c.matching_edges);
     matching_free_vertices += c.matching_free_vertices;
     lemon_fallbacks += c.lemon_fallbacks;
+    resumed_matchings += c.resumed_matchings;
+    persistent_fallbacks += c.persistent_fallbacks;
     min_cost_flows.add(c.min_cost_flows);
     t_simplify += c.time_simplify_s;
     t_lp_guess += c.time_lp_guess_s;
@@ -211,6 +214,8 @@ Solution solve_problem(const Problem& problem, const SolverConfig& config) {
     stats["matching_edges_max"] = matching_edges;
     stats["matching_free_after_warm_start"] = matching_free_vertices;
     stats["matching_lemon_fallbacks"] = lemon_fallbacks;
+    stats["matchings_resumed"] = resumed_matchings;
+    stats["matching_persistent_fallbacks"] = persistent_fallbacks;
     stats["time_refine_build_s"] = t_build;
     stats["time_pruning_s"] = t_pruning;
     stats["time_matching_s"] = t_matching;

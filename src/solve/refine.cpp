@@ -15,6 +15,7 @@
 #include "reduce/bmatching.hpp"
 #include "reduce/linearize.hpp"
 #include "reduce/matching_gadgets.hpp"
+#include "solve/persistent_rounds.hpp"
 #include "solve/residual_pruning.hpp"
 
 namespace bimdf::detail {
@@ -89,8 +90,51 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     if (options.on_round) options.on_round(r.rounds, r.objective, improved);
   };
   std::vector<double> lp_potential = std::move(start_potential);
+  std::optional<PersistentRounds> kept;
+  if (options.matching == MatchingBackend::Persistent) kept.emplace(p);
   while (true) {
     if (r.rounds >= options.max_rounds || seconds_since(start) > options.time_limit_s) return r;
+    if (kept) {
+      std::optional<PersistentRound> round;
+      try {
+        round = kept->round(r.flow, lp_potential);
+      } catch (const std::logic_error&) {
+        // A weight beyond the solver's bound (or a bug of ours, never a wrong answer): this
+        // and the later rounds are solved afresh.
+        kept.reset();
+        ++r.persistent_fallbacks;
+        continue;
+      }
+      ++r.rounds;
+      r.time_pruning_s += round->time_lp_s;
+      r.time_build_s += round->time_build_s;
+      r.time_matching_s += round->time_matching_s;
+      if (round->lp_solved) {
+        r.lps.add(round->lp_method);
+        lp_potential = std::move(round->lp_potential);
+      }
+      if (round->proves_optimal) {
+        r.converged = true;
+        round_done(false);
+        return r;
+      }
+      ++r.matchings;
+      r.resumed_matchings += round->resumed;
+      r.matching_free_vertices += round->free_vertices;
+      r.matching_nodes = std::max(r.matching_nodes, round->matching_nodes);
+      r.matching_edges = std::max(r.matching_edges, round->matching_edges);
+      r.max_throughflow = std::max(r.max_throughflow, round->max_throughflow);
+      const double next_objective = objective(p, round->next_flow);
+      if (!improves(next_objective)) {
+        r.converged = true;
+        round_done(false);
+        return r;
+      }
+      r.flow = std::move(round->next_flow);
+      r.objective = next_objective;
+      round_done(true);
+      continue;
+    }
     auto t = std::chrono::steady_clock::now();
     const Linearization lin = linearize(p, r.flow, unit_pieces);
     r.time_build_s += seconds_since(t);

@@ -46,8 +46,10 @@ struct RefineResult {
   int64_t matching_nodes = 0, matching_edges = 0;  // of the largest round
   int64_t matching_free_vertices = 0;  // vertices the warm start left free, summed over rounds
   int max_throughflow = 0;             // the largest throughflow limit of any round's b-matching
-  int64_t lemon_fallbacks = 0;  // rounds our solver left to LEMON (weights too large, or a bug)
-  MinCostFlowTally lps;         // how the rounds' LPs were solved
+  int64_t lemon_fallbacks = 0;    // rounds our solver left to LEMON (weights too large, or a bug)
+  int64_t resumed_matchings = 0;  // matchings started from the previous round's (persistent)
+  int64_t persistent_fallbacks = 0;  // persistent rounds that handed over to fresh ones
+  MinCostFlowTally lps;              // how the rounds' LPs were solved
 };
 
 // Requires a problem without outer edges and a flow feasible for it. Throws std::logic_error if

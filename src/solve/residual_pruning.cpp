@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "backend/min_cost_flow.hpp"
 #include "reduce/bmatching.hpp"
@@ -24,20 +25,62 @@ int lp_scale_log2(const BiMcf& residual) {
   return std::min(52, 56 - needed);
 }
 
-ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>& start_potential) {
-  ResidualPruning out;
-  const int n = residual.num_nodes(), m = residual.num_arcs();
-  for (int v = 0; v < n; ++v)
+namespace {
+
+// The relaxation double cover of `residual` and its optimum.
+std::pair<DoubleCover, MinCostFlowResult> relaxation_optimum(
+    const BiMcf& residual, const std::vector<double>& start_potential, int scale_log2) {
+  for (int v = 0; v < residual.num_nodes(); ++v)
     if (residual.demand[v] != 0)
       throw std::invalid_argument("residual pruning needs zero demands (node " + std::to_string(v) +
                                   ")");
-  const DoubleCover dc = build_double_cover(residual, DoubleCoverKind::Relaxation);
-  const MinCostFlowResult lp =
-      solve_min_cost_flow(dc.mcf, lp_scale_log2(residual), start_potential);
+  DoubleCover dc = build_double_cover(residual, DoubleCoverKind::Relaxation);
+  MinCostFlowResult lp = solve_min_cost_flow(dc.mcf, scale_log2, start_potential);
   if (lp.status != MinCostFlowStatus::Optimal)
     throw std::logic_error(
         "residual pruning: the LP relaxation of a circulation problem with "
         "finite capacities is not optimal");
+  return {std::move(dc), std::move(lp)};
+}
+
+// d(v) = π(v⁻) − π(v⁺) (double cover nodes v⁺ = 2v, v⁻ = 2v + 1: double_cover.cpp).
+int64_t node_dual(const MinCostFlowResult& lp, int v) {
+  return lp.potential[2 * v + 1] - lp.potential[2 * v];
+}
+
+// The LP's integer circulation when its doubled flow is even everywhere, else empty.
+std::vector<int64_t> integral_part(std::span<const int64_t> twice) {
+  std::vector<int64_t> y;
+  for (int64_t t : twice)
+    if (t % 2 != 0) return y;
+  for (int64_t t : twice) y.push_back(t / 2);
+  return y;
+}
+
+}  // namespace
+
+ResidualLp solve_residual_lp(const BiMcf& residual, const std::vector<double>& start_potential,
+                             int scale_log2) {
+  auto [dc, lp] = relaxation_optimum(residual, start_potential, scale_log2);
+  ResidualLp out;
+  out.potential = potentials_in_cost_units(lp);
+  out.lp_method = lp.method;
+  out.cost_scale = lp.cost_scale;
+  __int128 lp_value = 0;
+  for (int k = 0; k < dc.mcf.num_arcs(); ++k)
+    lp_value += static_cast<__int128>(lp.scaled_cost[k]) * lp.flow[k];
+  out.proves_optimal = lp_value >= 0;
+  out.twice_flow = dc.lift(lp.flow, residual.num_arcs());
+  if (!out.proves_optimal) out.integral_circulation = integral_part(out.twice_flow);
+  out.node_dual.resize(residual.num_nodes());
+  for (int v = 0; v < residual.num_nodes(); ++v) out.node_dual[v] = node_dual(lp, v);
+  return out;
+}
+
+ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>& start_potential) {
+  ResidualPruning out;
+  const int n = residual.num_nodes(), m = residual.num_arcs();
+  const auto [dc, lp] = relaxation_optimum(residual, start_potential, lp_scale_log2(residual));
   out.potential = potentials_in_cost_units(lp);
   out.lp_method = lp.method;
 
@@ -66,12 +109,7 @@ ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>&
 
   // The relaxation's directed flow is 2y; an even one is an integer circulation.
   const std::vector<int64_t> twice = dc.lift(lp.flow, m);
-  bool integral = true;
-  for (int64_t t : twice) integral = integral && t % 2 == 0;
-  if (integral) {
-    out.integral_circulation.resize(m);
-    for (int a = 0; a < m; ++a) out.integral_circulation[a] = twice[a] / 2;
-  }
+  out.integral_circulation = integral_part(twice);
 
   out.cost_scale = lp.cost_scale;
   std::vector<int> node_of(n, -1);
@@ -79,8 +117,7 @@ ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>&
     if (node_of[e.node] < 0) {
       node_of[e.node] = out.reduced.num_nodes();
       out.reduced.demand.push_back(0);
-      // Double cover nodes: v⁺ = 2v, v⁻ = 2v + 1 (double_cover.cpp).
-      out.node_dual.push_back(lp.potential[2 * e.node + 1] - lp.potential[2 * e.node]);
+      out.node_dual.push_back(node_dual(lp, e.node));
     }
     return End{node_of[e.node], e.head};
   };

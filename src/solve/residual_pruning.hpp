@@ -64,6 +64,23 @@ struct ResidualPruning {
 // push the doubled integer costs past the blossom solver's bound |w|·(nodes + 1) < 2^58.
 int lp_scale_log2(const BiMcf& residual);
 
+// The residual's LP relaxation alone, for every node and arc (no fixing): what persistent
+// refinement rounds (persistent_rounds.hpp) start their matching from. Arcs may have capacity 0
+// here (slots the flow cannot use at present). Same requirements and errors as below.
+struct ResidualLp {
+  bool proves_optimal = false;                // the LP optimum is 0
+  std::vector<int64_t> integral_circulation;  // as in ResidualPruning
+  double cost_scale = 1;
+  std::vector<int64_t> node_dual;   // d(v) per residual node, units of 1/S
+  std::vector<int64_t> twice_flow;  // 2y per residual arc
+  std::vector<double> potential;    // per double-cover node, units of cost
+  MinCostFlowMethod lp_method = MinCostFlowMethod::NetworkSimplex;
+};
+// `scale_log2` plays the role of lp_scale_log2(residual), which callers whose matching is
+// larger than that bound assumes (or who want headroom) lower.
+ResidualLp solve_residual_lp(const BiMcf& residual, const std::vector<double>& start_potential,
+                             int scale_log2);
+
 // `residual` must have zero demands and finite capacities. Throws std::logic_error if its LP
 // relaxation is not optimal (the zero circulation is feasible and capacities are finite).
 // `start_potential`, when not empty, are potentials per double-cover node to warm-start the LP

@@ -200,32 +200,46 @@ TEST(BlossomMatching, GadgetDualsAreFeasibleOnEveryGadgetEdge) {
   }
 }
 
-// The whole exact solver with either matching backend reaches the same optimum.
+// The whole exact solver with our matching backends reaches LEMON's optimum; the persistent one
+// does resume its matching in later rounds (not silently solve afresh).
 TEST(BlossomMatching, ExactSolverAgreesWithTheLemonBackend) {
-  std::mt19937_64 rng(3);
-  bimdf::testing::RandomProblemOptions options;
-  options.min_nodes = 15;
-  options.max_nodes = 40;
-  options.min_edges = 30;
-  options.max_edges = 90;
-  int optimal = 0;
-  int64_t matchings = 0;
-  for (int seed = 0; seed < 40; ++seed) {
-    bimdf::Problem p = bimdf::testing::random_problem(rng, options);
-    bimdf::testing::plant_feasible_demands(p, rng);
-    bimdf::Solver ours(p), lemon(p);
-    const bimdf::SolveStatus so = ours.matching(bimdf::MatchingBackend::Blossom).run();
-    const bimdf::SolveStatus sl = lemon.matching(bimdf::MatchingBackend::Lemon).run();
-    ASSERT_EQ(so, sl) << "seed " << seed;
-    if (so != bimdf::SolveStatus::Optimal) continue;
-    ++optimal;
-    matchings += std::get<int64_t>(ours.solution().stats.at("matchings_solved"));
-    EXPECT_EQ(std::get<int64_t>(ours.solution().stats.at("matching_lemon_fallbacks")), 0);
-    const double a = ours.solution().objective, b = lemon.solution().objective;
-    EXPECT_NEAR(a, b, 1e-9 * std::max(1.0, std::fabs(b))) << "seed " << seed;
+  for (const bimdf::MatchingBackend backend :
+       {bimdf::MatchingBackend::Blossom, bimdf::MatchingBackend::Persistent}) {
+    const bool persistent = backend == bimdf::MatchingBackend::Persistent;
+    std::mt19937_64 rng(3);
+    bimdf::testing::RandomProblemOptions options;
+    options.min_nodes = 15;
+    options.max_nodes = 40;
+    options.min_edges = 30;
+    options.max_edges = 90;
+    int optimal = 0;
+    int64_t matchings = 0, resumed = 0;
+    for (int seed = 0; seed < 40; ++seed) {
+      bimdf::Problem p = bimdf::testing::random_problem(rng, options);
+      bimdf::testing::plant_feasible_demands(p, rng);
+      bimdf::Solver ours(p), lemon(p);
+      const bimdf::SolveStatus so = ours.matching(backend).run();
+      const bimdf::SolveStatus sl = lemon.matching(bimdf::MatchingBackend::Lemon).run();
+      ASSERT_EQ(so, sl) << "seed " << seed << (persistent ? ", persistent" : "");
+      if (so != bimdf::SolveStatus::Optimal) continue;
+      ++optimal;
+      const auto& stats = ours.solution().stats;
+      matchings += std::get<int64_t>(stats.at("matchings_solved"));
+      resumed += std::get<int64_t>(stats.at("matchings_resumed"));
+      EXPECT_EQ(std::get<int64_t>(stats.at("matching_lemon_fallbacks")), 0);
+      EXPECT_EQ(std::get<int64_t>(stats.at("matching_persistent_fallbacks")), 0);
+      const double a = ours.solution().objective, b = lemon.solution().objective;
+      EXPECT_NEAR(a, b, 1e-9 * std::max(1.0, std::fabs(b)))
+          << "seed " << seed << (persistent ? ", persistent" : "");
+    }
+    EXPECT_GE(optimal, 30);
+    EXPECT_GT(matchings, 20);  // the LP alone did not settle them
+    if (persistent) {
+      EXPECT_GT(resumed, 10);
+    } else {
+      EXPECT_EQ(resumed, 0);
+    }
   }
-  EXPECT_GE(optimal, 30);
-  EXPECT_GT(matchings, 20);  // the LP alone did not settle them
 }
 
 // A residual with ~130 unit arcs per node: the largest matching it can lead to has far more
