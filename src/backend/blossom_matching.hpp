@@ -64,7 +64,8 @@ class BlossomMatching {
                   std::span<const int64_t> weight);
 
   // Optional: a dual value per vertex, in the units of the weights, each below 2^58 in
-  // magnitude (std::invalid_argument otherwise).
+  // magnitude (std::invalid_argument otherwise). After a run, either setter makes the next run
+  // start afresh instead of resuming.
   BlossomMatching& initial_duals(std::span<const int64_t> y);
   // Optional: per edge, 1 if it starts matched. Edges that are not tight after the duals are
   // made feasible, or that touch an already matched vertex, are dropped.
@@ -80,6 +81,8 @@ class BlossomMatching {
   // reopened — the one `reopen` names, else end_a — since its dual must meet the new weight.
   BlossomMatching& update_edge(int e, int64_t weight, bool enabled = true);
   // After an Optimal run: the next run re-opens vertex v (leaves its blossoms and its mate).
+  // Between these calls and that run, status() and matched_edges() still describe the last
+  // run (whose matching may use an edge just disabled).
   BlossomMatching& reopen(int v);
 
   Status status() const { return status_; }
@@ -88,6 +91,8 @@ class BlossomMatching {
   int64_t matching_weight() const;
   // Vertices the start left free, i.e. trees grown (a measure of the warm start's quality).
   int64_t free_after_start() const { return free_after_start_; }
+  // Of a resumed run: matched pairs the parity step had to unmatch (no 2-SAT placement).
+  int64_t parity_unmatched_pairs() const { return parity_unmatched_pairs_; }
 
  private:
   enum Label : int8_t { kNone, kPlus, kMinus };
@@ -183,6 +188,7 @@ class BlossomMatching {
 
   Status status_ = Status::NotRun;
   int64_t free_after_start_ = 0;
+  int64_t parity_unmatched_pairs_ = 0;
 };
 
 }  // namespace bimdf::detail

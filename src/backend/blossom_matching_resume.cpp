@@ -191,6 +191,7 @@ void BlossomMatching::shift_parity() {
   for (size_t p = 0; p < given_up.size(); ++p) {
     const int t = pair_top[2 * p], partner = pair_top[2 * p + 1];
     if (given_up[p]) {
+      ++parity_unmatched_pairs_;
       move(t, +1);
       move(partner, +1);
       const int base = base_[t];
@@ -214,6 +215,7 @@ void BlossomMatching::resume() {
   for (int64_t x : y_)
     if (x <= -(int64_t{1} << 60) || x >= (int64_t{1} << 60))
       throw std::invalid_argument("blossom matching: duals beyond 2^60, cannot resume");
+  parity_unmatched_pairs_ = 0;
   std::vector<int> open;
   ++mark_stamp_;
   auto add = [&](int v) {

@@ -50,6 +50,7 @@ BlossomMatching& BlossomMatching::initial_duals(std::span<const int64_t> y) {
       throw std::invalid_argument("blossom matching: initial duals must stay below 2^58");
   y_.resize(n_);
   for (int v = 0; v < n_; ++v) y_[v] = 2 * y[v];
+  kept_ = false;  // a new start: the next run does not resume
   return *this;
 }
 
@@ -57,6 +58,7 @@ BlossomMatching& BlossomMatching::initial_matching(std::span<const char> matched
   if (matched.size() != end_a_.size())
     throw std::invalid_argument("blossom matching: one initial flag per edge expected");
   start_match_.assign(matched.begin(), matched.end());
+  kept_ = false;  // a new start: the next run does not resume
   return *this;
 }
 

@@ -51,7 +51,16 @@ struct PersistentRounds::State {
   std::vector<int> bedge_of_arc;
   std::unique_ptr<BlossomMatching> solver;
 
-  int64_t weight(double w) const { return 2 * static_cast<int64_t>(std::llround(w * scale)); }
+  // The doubled integer weight of a matching edge (refine.cpp's convention). Later rounds keep
+  // the first round's scale, so a slope far steeper than any then seen could leave int64: a
+  // weight beyond 2^61 throws (the blossom solver's own bound is far lower), and refinement
+  // falls back to fresh rounds.
+  int64_t weight(double w) const {
+    const double scaled = w * scale;
+    if (!(std::fabs(scaled) < 0x1p61))
+      throw std::invalid_argument("persistent refinement: a weight beyond the cost scale");
+    return 2 * static_cast<int64_t>(std::llround(scaled));
+  }
 
   // The end of b-edge be's block of matching edges (matching_gadgets.hpp).
   int block_end(int be) const {
@@ -66,7 +75,8 @@ struct PersistentRounds::State {
   }
 };
 
-PersistentRounds::PersistentRounds(const Problem& problem) : problem_(problem) {}
+PersistentRounds::PersistentRounds(const Problem& problem, bool hub_throughflow)
+    : problem_(problem), hub_throughflow_(hub_throughflow) {}
 PersistentRounds::~PersistentRounds() = default;
 
 PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
@@ -80,9 +90,10 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
     state_ = std::make_unique<State>();
     State& s = *state_;
     s.x.assign(flow.begin(), flow.end());
-    // The residual with every slot (capacity 1) is the matching's shape; the LP sees the
-    // enabled ones only (capacity 0 for the others).
-    BiMcf shape, residual;
+    // The residual with every slot (capacity 1) is the matching's shape; `enabled` says which
+    // slots the bounds allow at present.
+    BiMcf shape;
+    std::vector<char> enabled;
     shape.demand.assign(p.num_nodes(), 0);
     for (int e = 0; e < m; ++e) {
       const End a = p.end_a[e], b = p.end_b[e];
@@ -90,12 +101,11 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
         const Slot sl = slot(p, e, s.x[e], k);
         shape.end_a.push_back(k < 2 ? a : End{a.node, !a.head});
         shape.end_b.push_back(k < 2 ? b : End{b.node, !b.head});
-        shape.capacity.push_back(sl.enabled ? 1 : 0);
+        shape.capacity.push_back(1);
         shape.cost.push_back(sl.cost);
+        enabled.push_back(sl.enabled);
       }
     }
-    residual = shape;
-    std::fill(shape.capacity.begin(), shape.capacity.end(), 1);
     // The LP is a classic round's (linearize.hpp: equal prices merged, disabled slots absent,
     // half the arcs), its flow then spread over the slots in order.
     LinearizeOptions unit_pieces;
@@ -119,7 +129,8 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
     t = std::chrono::steady_clock::now();
     s.scale = lp.cost_scale;
     // The throughflow limits of a classic first round (its arc counts: merged, enabled only).
-    const std::vector<int> throughflow = refinement_throughflow(lin.mcf);
+    const std::vector<int> throughflow =
+        hub_throughflow_ ? refinement_throughflow(lin.mcf) : std::vector<int>(p.num_nodes(), 2);
     out.max_throughflow = *std::max_element(throughflow.begin(), throughflow.end());
     s.bm = reduce_to_bmatching(shape, throughflow);
     s.mm = reduce_to_perfect_matching(s.bm.bmatching);
@@ -133,12 +144,12 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
     for (int be = 0; be < bm.num_edges(); ++be) bedge_weight[be] = s.weight(bm.weight[be]);
     // A disabled slot's gadget must start unused and tight (L–R), which gadget_duals gives a
     // b-edge of weight −∞: its L–copy edges impose nothing.
-    for (int arc = 0; arc < residual.num_arcs(); ++arc)
-      if (residual.capacity[arc] == 0)
+    for (int arc = 0; arc < shape.num_arcs(); ++arc)
+      if (!enabled[arc])
         bedge_weight[s.bedge_of_arc[arc]] = std::numeric_limits<int64_t>::min() / 4;
     s.solver = std::make_unique<BlossomMatching>(g.num_nodes, g.end_a, g.end_b, weight);
-    for (int arc = 0; arc < residual.num_arcs(); ++arc)
-      if (residual.capacity[arc] == 0)
+    for (int arc = 0; arc < shape.num_arcs(); ++arc)
+      if (!enabled[arc])
         s.weighted_edges(s.bedge_of_arc[arc],
                          [&](int k) { s.solver->update_edge(k, weight[k], false); });
     // The warm start of a classic round (refine.cpp): b-node duals ±d(v), the LP's integral
@@ -150,7 +161,7 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
     }
     // The LP may split a unit over both slots of a direction (half on each of two equal
     // prices, one copy each): integral in sum, so the sum's units go to the slots in order.
-    std::vector<int64_t> twice(residual.num_arcs(), 0);
+    std::vector<int64_t> twice(shape.num_arcs(), 0);
     std::vector<int> filled(2 * m, 0);  // slots taken per edge and direction
     for (int a = 0; a < lin.mcf.num_arcs(); ++a) {
       const int e = lin.arc_edge[a], backward = lin.arc_direction[a] < 0;
@@ -162,7 +173,7 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
       }
     }
     std::vector<int> used(bm.num_edges(), 0);
-    for (int arc = 0; arc < residual.num_arcs(); arc += 2) {
+    for (int arc = 0; arc < shape.num_arcs(); arc += 2) {
       const int64_t units = (twice[arc] + twice[arc + 1]) / 2;
       used[s.bedge_of_arc[arc]] = static_cast<int>(std::min<int64_t>(units, 1));
       used[s.bedge_of_arc[arc + 1]] = static_cast<int>(units - std::min<int64_t>(units, 1));

@@ -41,8 +41,9 @@ struct PersistentRound {
 
 class PersistentRounds {
  public:
-  // Requires a problem without outer edges; keeps a reference to it.
-  explicit PersistentRounds(const Problem& problem);
+  // Requires a problem without outer edges; keeps a reference to it. `hub_throughflow` as in
+  // RefineOptions (refine.hpp): false gives every node K = 2.
+  PersistentRounds(const Problem& problem, bool hub_throughflow);
   ~PersistentRounds();
   PersistentRounds(const PersistentRounds&) = delete;
   PersistentRounds& operator=(const PersistentRounds&) = delete;
@@ -58,6 +59,7 @@ class PersistentRounds {
  private:
   struct State;
   const Problem& problem_;
+  bool hub_throughflow_;
   std::unique_ptr<State> state_;
 };
 

@@ -91,7 +91,7 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
   };
   std::vector<double> lp_potential = std::move(start_potential);
   std::optional<PersistentRounds> kept;
-  if (options.matching == MatchingBackend::Persistent) kept.emplace(p);
+  if (options.matching == MatchingBackend::Persistent) kept.emplace(p, options.hub_throughflow);
   while (true) {
     if (r.rounds >= options.max_rounds || seconds_since(start) > options.time_limit_s) return r;
     if (kept) {

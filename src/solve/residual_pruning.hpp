@@ -65,8 +65,9 @@ struct ResidualPruning {
 int lp_scale_log2(const BiMcf& residual);
 
 // The residual's LP relaxation alone, for every node and arc (no fixing): what persistent
-// refinement rounds (persistent_rounds.hpp) start their matching from. Arcs may have capacity 0
-// here (slots the flow cannot use at present). Same requirements and errors as below.
+// refinement rounds (persistent_rounds.hpp) start their matching from. `residual` must have
+// zero demands (std::invalid_argument otherwise) and finite capacities; std::logic_error if the
+// LP is not optimal.
 struct ResidualLp {
   bool proves_optimal = false;                // the LP optimum is 0
   std::vector<int64_t> integral_circulation;  // as in ResidualPruning

@@ -52,21 +52,27 @@ void change(std::mt19937& rng, Graph& g, std::vector<char>& enabled, BlossomMatc
 TEST(BlossomReoptimize, EqualsEnumerationOverRoundsOfChanges) {
   std::mt19937 rng(17);
   int rounds_with_matching = 0, resumed_infeasible = 0;
-  for (int it = 0; it < 400; ++it) {
+  int64_t parity_unmatched = 0;
+  for (int it = 0; it < 600; ++it) {
+    // Every third case dense, with small weights: many tight edges between odd blossoms, so
+    // that the parity step must sometimes unmatch a pair.
+    const bool dense = it % 3 == 0;
     const int n = 2 * (2 + static_cast<int>(rng() % 4));
-    Graph g = bimdf::testing::random_graph(rng, n, n + static_cast<int>(rng() % (3 * n)), 10);
+    Graph g = bimdf::testing::random_graph(
+        rng, n, dense ? 4 * n : n + static_cast<int>(rng() % (3 * n)), dense ? 3 : 10);
     std::vector<char> enabled(g.a.size(), 1), keep(g.a.size(), 0);
     BlossomMatching solver(g.n, g.a, g.b, g.w);
     bool kept = answer(g, enabled, solver).has_value();
     for (int round = 0; round < 8; ++round) {
-      change(rng, g, enabled, solver, 1 + static_cast<int>(rng() % 3), static_cast<int>(rng() % 2),
-             10, keep);
+      change(rng, g, enabled, solver, 1 + static_cast<int>(rng() % 3),
+             static_cast<int>(rng() % (dense ? 4 : 2)), dense ? 3 : 10, keep);
       const std::optional<int64_t> expected = bimdf::testing::brute_force(enabled_part(g, enabled));
       const std::optional<int64_t> got = answer(g, enabled, solver);
       ASSERT_EQ(got.has_value(), expected.has_value()) << "case " << it << ", round " << round;
       if (got) {
         EXPECT_EQ(*got, *expected) << "case " << it << ", round " << round;
         ++rounds_with_matching;
+        parity_unmatched += solver.parity_unmatched_pairs();
       } else if (kept) {
         ++resumed_infeasible;  // the next run starts afresh
       }
@@ -75,6 +81,7 @@ TEST(BlossomReoptimize, EqualsEnumerationOverRoundsOfChanges) {
   }
   EXPECT_GT(rounds_with_matching, 1000);
   EXPECT_GT(resumed_infeasible, 20);  // failed resumes are covered too
+  EXPECT_GT(parity_unmatched, 0);     // and pairs the parity step could not place
 }
 
 // Larger graphs with a planted perfect matching (never disabled) and many blossoms: every
@@ -127,6 +134,34 @@ TEST(BlossomReoptimize, RejectsBadUpdatesWithAMessage) {
   solver.update_edge(0, 7, true);
   EXPECT_EQ(solver.run(), BlossomMatching::Status::Optimal);
   EXPECT_EQ(solver.matching_weight(), 7);
+}
+
+// A new start given after a run (initial duals or matching) is a fresh solve, not a resume
+// from the old blossoms with the new duals mixed in.
+TEST(BlossomReoptimize, ANewStartAfterARunSolvesAfresh) {
+  std::mt19937 rng(31);
+  for (int it = 0; it < 20; ++it) {
+    const int n = 2 * (20 + static_cast<int>(rng() % 60));
+    Graph g = bimdf::testing::random_graph(rng, n, 3 * n, 1000);
+    for (int v = 0; v + 1 < n; v += 2) {
+      g.a.push_back(v);
+      g.b.push_back(v + 1);
+      g.w.push_back(static_cast<int64_t>(rng() % 2001) - 1000);
+    }
+    BlossomMatching solver(g.n, g.a, g.b, g.w);
+    const std::optional<int64_t> optimum = bimdf::testing::lemon_optimum(g);
+    ASSERT_EQ(bimdf::testing::solve(g, solver), optimum) << "case " << it;
+    std::vector<int64_t> y(g.n);
+    for (int64_t& x : y) x = static_cast<int64_t>(rng() % 2001) - 1000;
+    std::vector<char> flags(g.a.size());
+    for (char& f : flags) f = rng() % 2;
+    if (it % 2 == 0) {
+      solver.initial_duals(y);
+    } else {
+      solver.initial_matching(flags);
+    }
+    EXPECT_EQ(bimdf::testing::solve(g, solver), optimum) << "case " << it;
+  }
 }
 
 }  // namespace
