@@ -80,7 +80,11 @@ ResidualLp solve_residual_lp(const BiMcf& residual, const std::vector<double>& s
 ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>& start_potential) {
   ResidualPruning out;
   const int n = residual.num_nodes(), m = residual.num_arcs();
-  const auto [dc, lp] = relaxation_optimum(residual, start_potential, lp_scale_log2(residual));
+  // Named references, not a structured binding: a lambda below uses `lp`, which C++17 (and
+  // clang, which builds the fuzzers) does not allow to capture from a binding.
+  const auto optimum = relaxation_optimum(residual, start_potential, lp_scale_log2(residual));
+  const DoubleCover& dc = optimum.first;
+  const MinCostFlowResult& lp = optimum.second;
   out.potential = potentials_in_cost_units(lp);
   out.lp_method = lp.method;
 
