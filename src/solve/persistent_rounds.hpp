@@ -13,7 +13,11 @@
 // first round's matching starts from the residual's LP relaxation, as a classic round does
 // (residual_pruning.hpp); later rounds solve no LP. Every run ends with the solver's optimality
 // certificate on the whole residual, so a round that finds no improving circulation proves x
-// optimal exactly as a classic round does (Theorem 3.8).
+// optimal exactly as a classic round does (Theorem 3.8). Experimental (`--matching
+// persistent`): measured slower than fresh rounds on every instance so far, because dissolving
+// the blossoms that hold a change costs as much dual change as a fresh round and the fixed
+// shape is ~2.7× a pruned round's matching (docs/benchmarks.md, "A matching that persists
+// across rounds").
 #pragma once
 
 #include <cstdint>
