@@ -13,6 +13,7 @@
 #include "reduce/bmatching.hpp"
 #include "reduce/linearize.hpp"
 #include "reduce/matching_gadgets.hpp"
+#include "solve/refine.hpp"
 #include "solve/residual_pruning.hpp"
 
 namespace bimdf::detail {
@@ -108,11 +109,7 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
     }
     // The LP is a classic round's (linearize.hpp: equal prices merged, disabled slots absent,
     // half the arcs), its flow then spread over the slots in order.
-    LinearizeOptions unit_pieces;
-    unit_pieces.max_deviation = 2;
-    unit_pieces.step = 1;
-    unit_pieces.tails = false;
-    const Linearization lin = linearize(p, s.x, unit_pieces);
+    const Linearization lin = linearize(p, s.x, refinement_pieces());
     out.time_build_s += seconds_since(t);
     t = std::chrono::steady_clock::now();
     const ResidualLp lp =

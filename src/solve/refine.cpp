@@ -78,16 +78,24 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
   RefineResult r;
   r.flow = std::move(flow);
   r.objective = objective(p, r.flow);
-  LinearizeOptions unit_pieces;
-  unit_pieces.max_deviation = kDeviation;
-  unit_pieces.step = 1;
-  unit_pieces.tails = false;
+  const LinearizeOptions unit_pieces = refinement_pieces();
   // Strict improvement beyond rounding noise; otherwise x is optimal (Thm 3.8).
   auto improves = [&](double next_objective) {
     return next_objective < r.objective - 1e-12 * std::max(1.0, std::fabs(r.objective));
   };
   auto round_done = [&](bool improved) {
     if (options.on_round) options.on_round(r.rounds, r.objective, improved);
+  };
+  // The two ends of a round: no improving circulation (x is optimal; the caller returns r),
+  // or `next`, which lowers the objective to `next_objective`, becomes x.
+  auto proven_optimal = [&] {
+    r.converged = true;
+    round_done(false);
+  };
+  auto accept = [&](std::vector<int64_t> next, double next_objective) {
+    r.flow = std::move(next);
+    r.objective = next_objective;
+    round_done(true);
   };
   std::vector<double> lp_potential = std::move(start_potential);
   std::optional<PersistentRounds> kept;
@@ -114,8 +122,7 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
         lp_potential = std::move(round->lp_potential);
       }
       if (round->proves_optimal) {
-        r.converged = true;
-        round_done(false);
+        proven_optimal();
         return r;
       }
       ++r.matchings;
@@ -126,13 +133,10 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
       r.max_throughflow = std::max(r.max_throughflow, round->max_throughflow);
       const double next_objective = objective(p, round->next_flow);
       if (!improves(next_objective)) {
-        r.converged = true;
-        round_done(false);
+        proven_optimal();
         return r;
       }
-      r.flow = std::move(round->next_flow);
-      r.objective = next_objective;
-      round_done(true);
+      accept(std::move(round->next_flow), next_objective);
       continue;
     }
     auto t = std::chrono::steady_clock::now();
@@ -145,17 +149,14 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     r.time_pruning_s += seconds_since(t);
     ++r.rounds;
     if (pruned.proves_optimal) {
-      r.converged = true;
-      round_done(false);
+      proven_optimal();
       return r;
     }
     if (!pruned.integral_circulation.empty()) {
       std::vector<int64_t> next = lin.lift(pruned.integral_circulation);
       const double next_objective = objective(p, next);
       if (improves(next_objective)) {
-        r.flow = std::move(next);
-        r.objective = next_objective;
-        round_done(true);
+        accept(std::move(next), next_objective);
         continue;
       }
     }
@@ -183,14 +184,19 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     const double next_objective = objective(p, next);
     r.time_build_s += seconds_since(t);
     if (!improves(next_objective)) {
-      r.converged = true;
-      round_done(false);
+      proven_optimal();
       return r;
     }
-    r.flow = std::move(next);
-    r.objective = next_objective;
-    round_done(true);
+    accept(std::move(next), next_objective);
   }
+}
+
+LinearizeOptions refinement_pieces() {
+  LinearizeOptions unit_pieces;
+  unit_pieces.max_deviation = kDeviation;
+  unit_pieces.step = 1;
+  unit_pieces.tails = false;
+  return unit_pieces;
 }
 
 }  // namespace bimdf::detail

@@ -20,6 +20,7 @@
 #include "backend/min_cost_flow.hpp"
 #include "bimdf/problem.hpp"
 #include "bimdf/solve.hpp"
+#include "reduce/linearize.hpp"
 
 namespace bimdf::detail {
 
@@ -51,6 +52,10 @@ struct RefineResult {
   int64_t persistent_fallbacks = 0;  // persistent rounds that handed over to fresh ones
   MinCostFlowTally lps;              // how the rounds' LPs were solved
 };
+
+// The residual pieces of every refinement round: unit pieces up to deviation U = 2 each way,
+// no tails (paper §3.9; linearize.hpp). Persistent rounds price their slots the same way.
+LinearizeOptions refinement_pieces();
 
 // Requires a problem without outer edges and a flow feasible for it. Throws std::logic_error if
 // a round's matching has no perfect matching (the zero circulation always is one: a bug).
