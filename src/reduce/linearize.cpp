@@ -41,37 +41,46 @@ class PieceWriter {
 // Pieces in one direction: `room` is how far the flow may move (kInfinity for unbounded),
 // `at(d)` the cost at deviation d in that direction, `minimizer_beyond(d)` the deviation ≥ d
 // where the cost is smallest (used by underestimating tails only).
-template <typename CostAt, typename Minimizer>
-void add_pieces(PieceWriter& out, int64_t room, const CostAt& at,
+template <typename Minimizer>
+void add_pieces(PieceWriter& out, int64_t room, const CostAlong& at,
                 const Minimizer& minimizer_beyond, const LinearizeOptions& opt) {
   const int64_t s = opt.step;
   int64_t d = 0;
   while (d + s <= opt.max_deviation && room - d >= s) {
-    out.add(s, (at(d + s) - at(d)) / static_cast<double>(s));
+    out.add(s, piece_cost(at, d, s));
     d += s;
   }
   if (!opt.tails || room == d) return;
   if (opt.underestimating_tails) {
-    const double slope = at(d + 1) - at(d);
+    const double slope = piece_cost(at, d, 1);
     if (room != kInfinity || slope >= 0) {
       out.add(room == kInfinity ? kInfinity : room - d, slope);
       return;
     }
     const int64_t m = minimizer_beyond(d);
     out.add(m - d, slope);
-    out.add(kInfinity, std::max(0.0, at(m + 1) - at(m)));
+    out.add(kInfinity, std::max(0.0, piece_cost(at, m, 1)));
     return;
   }
   if (room == kInfinity) {
-    out.add(kInfinity, std::max(0.0, (at(d + s) - at(d)) / static_cast<double>(s)));
+    out.add(kInfinity, std::max(0.0, piece_cost(at, d, s)));
   } else {
     const int64_t w = room - d;
     const int64_t sample = std::min<int64_t>(w, s);
-    out.add(w, (at(d + sample) - at(d)) / static_cast<double>(sample));
+    out.add(w, piece_cost(at, d, sample));
   }
 }
 
 }  // namespace
+
+int64_t deviation_room(const Problem& p, int e, int64_t g, int direction) {
+  if (direction > 0) return p.upper[e] == kInfinity ? kInfinity : p.upper[e] - g;
+  return p.lower[e] == -kInfinity ? kInfinity : g - p.lower[e];
+}
+
+double piece_cost(const CostAlong& at, int64_t d, int64_t s) {
+  return (at(d + s) - at(d)) / static_cast<double>(s);
+}
 
 Linearization linearize(const Problem& p, std::span<const int64_t> guess,
                         const LinearizeOptions& opt) {
@@ -84,15 +93,13 @@ Linearization linearize(const Problem& p, std::span<const int64_t> guess,
     residual[a.node] -= static_cast<__int128>(a.sign()) * g;
     residual[b.node] -= static_cast<__int128>(b.sign()) * g;
     const Cost& c = p.cost[e];
-    const int64_t up_room = p.upper[e] == kInfinity ? kInfinity : p.upper[e] - g;
-    const int64_t down_room = p.lower[e] == -kInfinity ? kInfinity : g - p.lower[e];
     PieceWriter forward(lin, e, +1, a, b);
     add_pieces(
-        forward, up_room, [&](int64_t d) { return c(g + d); },
+        forward, deviation_room(p, e, g, +1), CostAlong{c, g, +1},
         [&](int64_t d) { return c.argmin(g + d, kInfinity) - g; }, opt);
     PieceWriter backward(lin, e, -1, End{a.node, !a.head}, End{b.node, !b.head});
     add_pieces(
-        backward, down_room, [&](int64_t d) { return c(g - d); },
+        backward, deviation_room(p, e, g, -1), CostAlong{c, g, -1},
         [&](int64_t d) { return g - c.argmin(-kInfinity, g - d); }, opt);
   }
   lin.mcf.demand.resize(p.num_nodes());

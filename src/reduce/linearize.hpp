@@ -40,13 +40,30 @@ struct LinearizeOptions {
 
 struct Linearization {
   BiMcf mcf;
-  std::vector<int> arc_edge;            // Bi-MCF arc → Bi-MDF edge
-  std::vector<int8_t> arc_direction;    // +1 forward piece, −1 backward piece
-  std::vector<int64_t> guess;           // g
+  std::vector<int> arc_edge;          // Bi-MCF arc → Bi-MDF edge
+  std::vector<int8_t> arc_direction;  // +1 forward piece, −1 backward piece
+  std::vector<int64_t> guess;         // g
 
   // x = g + Σ forward − Σ backward arc flows.
   std::vector<int64_t> lift(std::span<const int64_t> arc_flow) const;
 };
+
+// The cost of edge e at deviation d ≥ 0 from g in `direction` (+1 up, −1 down): c(g ± d).
+struct CostAlong {
+  const Cost& cost;
+  int64_t g;
+  int direction;
+  double operator()(int64_t d) const { return cost(g + direction * d); }
+};
+
+// How far edge e's flow may move from g in `direction` (+1 towards its upper bound, −1 towards
+// its lower one): kInfinity when that bound is.
+int64_t deviation_room(const Problem& problem, int e, int64_t g, int direction);
+
+// The per-unit cost of the piece from deviation d to d + s: (c(g ± (d+s)) − c(g ± d)) / s. The
+// price of every non-tail piece; refinement's persistent slots (persistent_rounds.cpp) use it
+// too, so that both price a step alike.
+double piece_cost(const CostAlong& at, int64_t d, int64_t s);
 
 // Requires a problem without outer edges and g within bounds. Throws std::overflow_error if a
 // residual demand leaves ±2^62.

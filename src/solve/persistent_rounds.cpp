@@ -32,14 +32,10 @@ struct Slot {
 
 // Slot s of edge e around flow x, priced as linearize.hpp prices unit pieces.
 Slot slot(const Problem& p, int e, int64_t x, int s) {
-  const int64_t k = s % 2 + 1;
-  const Cost& c = p.cost[e];
-  if (s < 2) {
-    if (p.upper[e] != kInfinity && p.upper[e] - x < k) return {};
-    return {true, c(x + k) - c(x + k - 1)};
-  }
-  if (p.lower[e] != -kInfinity && x - p.lower[e] < k) return {};
-  return {true, c(x - k) - c(x - k + 1)};
+  const int64_t k = s % 2 + 1;  // the step from deviation k − 1 to k
+  const int direction = s < 2 ? +1 : -1;
+  if (deviation_room(p, e, x, direction) < k) return {};
+  return {true, piece_cost(CostAlong{p.cost[e], x, direction}, k - 1, 1)};
 }
 
 }  // namespace
@@ -52,16 +48,10 @@ struct PersistentRounds::State {
   std::vector<int> bedge_of_arc;
   std::unique_ptr<BlossomMatching> solver;
 
-  // The doubled integer weight of a matching edge (refine.cpp's convention). Later rounds keep
-  // the first round's scale, so a slope far steeper than any then seen could leave int64: a
-  // weight beyond 2^61 throws (the blossom solver's own bound is far lower), and refinement
-  // falls back to fresh rounds.
-  int64_t weight(double w) const {
-    const double scaled = w * scale;
-    if (!(std::fabs(scaled) < 0x1p61))
-      throw std::invalid_argument("persistent refinement: a weight beyond the cost scale");
-    return 2 * static_cast<int64_t>(std::llround(scaled));
-  }
+  // The doubled integer weight of a matching edge (refine.hpp). Later rounds keep the first
+  // round's scale, so a slope far steeper than any then seen could leave int64: such a weight
+  // throws, and refinement falls back to fresh rounds.
+  int64_t weight(double w) const { return doubled_matching_weight(w, scale); }
 
   // The end of b-edge be's block of matching edges (matching_gadgets.hpp).
   int block_end(int be) const {
@@ -149,15 +139,9 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
       if (!enabled[arc])
         s.weighted_edges(s.bedge_of_arc[arc],
                          [&](int k) { s.solver->update_edge(k, weight[k], false); });
-    // The warm start of a classic round (refine.cpp): b-node duals ±d(v), the LP's integral
-    // part as used gadgets.
-    std::vector<int64_t> bnode_dual(bm.num_nodes());
-    for (int v = 0; 2 * v < bm.num_nodes(); ++v) {
-      bnode_dual[2 * v] = lp.node_dual[v];
-      bnode_dual[2 * v + 1] = -lp.node_dual[v];
-    }
-    // The LP may split a unit over both slots of a direction (half on each of two equal
-    // prices, one copy each): integral in sum, so the sum's units go to the slots in order.
+    // The warm start of a classic round (refine.cpp): the LP's duals, its integral part as
+    // used gadgets. The LP may split a unit over both slots of a direction (half on each of two
+    // equal prices, one copy each): integral in sum, so the sum's units go to the slots in order.
     std::vector<int64_t> twice(shape.num_arcs(), 0);
     std::vector<int> filled(2 * m, 0);  // slots taken per edge and direction
     for (int a = 0; a < lin.mcf.num_arcs(); ++a) {
@@ -175,7 +159,7 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
       used[s.bedge_of_arc[arc]] = static_cast<int>(std::min<int64_t>(units, 1));
       used[s.bedge_of_arc[arc + 1]] = static_cast<int>(units - std::min<int64_t>(units, 1));
     }
-    s.solver->initial_duals(gadget_duals(bm, s.mm, bnode_dual, bedge_weight))
+    s.solver->initial_duals(round_matching_duals(bm, s.mm, lp.node_dual, bedge_weight))
         .initial_matching(gadget_matching(bm, s.mm, used));
   } else {
     // The slots of every edge the last round changed get their new prices, and their gadgets

@@ -33,26 +33,20 @@ std::optional<std::vector<char>> solve_round_matching(
     const BMatching& bm, std::span<const int> arc_of_edge, const MatchingReduction& mm,
     const ResidualPruning& pruned, const RefineOptions& options, RefineResult& r) {
   if (options.matching == MatchingBackend::Lemon) return max_weight_perfect_matching(mm.graph);
-  const double scale = pruned.cost_scale;
-  auto integer = [&](double w) { return 2 * static_cast<int64_t>(std::llround(w * scale)); };
   const MatchingGraph& g = mm.graph;
-  std::vector<int64_t> weight(g.num_edges()), bedge_weight(bm.num_edges());
-  for (int e = 0; e < g.num_edges(); ++e) weight[e] = integer(g.weight[e]);
-  for (int e = 0; e < bm.num_edges(); ++e) bedge_weight[e] = integer(bm.weight[e]);
-  // b-nodes 2v (heads of v, σ = +1) and 2v + 1 (tails, σ = −1): bmatching.hpp.
-  std::vector<int64_t> bnode_dual(bm.num_nodes());
-  for (int v = 0; 2 * v < bm.num_nodes(); ++v) {
-    bnode_dual[2 * v] = pruned.node_dual[v];
-    bnode_dual[2 * v + 1] = -pruned.node_dual[v];
-  }
   // The LP's integral part: one unit on each reduced arc it fills (2y = 2); gadget_matching
   // uses it on capacitated b-edges only (uncapacitated ones get slack pairs).
   std::vector<int> used(bm.num_edges(), 0);
   for (int e = 0; e < bm.num_edges(); ++e)
     if (arc_of_edge[e] >= 0) used[e] = static_cast<int>(pruned.twice_flow[arc_of_edge[e]] / 2);
   try {
+    std::vector<int64_t> weight(g.num_edges()), bedge_weight(bm.num_edges());
+    for (int e = 0; e < g.num_edges(); ++e)
+      weight[e] = doubled_matching_weight(g.weight[e], pruned.cost_scale);
+    for (int e = 0; e < bm.num_edges(); ++e)
+      bedge_weight[e] = doubled_matching_weight(bm.weight[e], pruned.cost_scale);
     BlossomMatching solver(g.num_nodes, g.end_a, g.end_b, weight);
-    solver.initial_duals(gadget_duals(bm, mm, bnode_dual, bedge_weight))
+    solver.initial_duals(round_matching_duals(bm, mm, pruned.node_dual, bedge_weight))
         .initial_matching(gadget_matching(bm, mm, used));
     // Augmenting through nested blossoms recurses once per nesting level below the path's
     // own (rotate_to): the same headroom as for LEMON (backend/perfect_matching.cpp).
@@ -71,6 +65,24 @@ std::optional<std::vector<char>> solve_round_matching(
 }
 
 }  // namespace
+
+int64_t doubled_matching_weight(double w, double cost_scale) {
+  const double scaled = w * cost_scale;
+  if (!(std::fabs(scaled) < 0x1p61))
+    throw std::invalid_argument("refinement: a matching weight beyond the cost scale");
+  return 2 * static_cast<int64_t>(std::llround(scaled));
+}
+
+std::vector<int64_t> round_matching_duals(const BMatching& bm, const MatchingReduction& mm,
+                                          std::span<const int64_t> node_dual,
+                                          std::span<const int64_t> bedge_weight) {
+  std::vector<int64_t> bnode_dual(bm.num_nodes());
+  for (int v = 0; 2 * v < bm.num_nodes(); ++v) {
+    bnode_dual[2 * v] = node_dual[v];
+    bnode_dual[2 * v + 1] = -node_dual[v];
+  }
+  return gadget_duals(bm, mm, bnode_dual, bedge_weight);
+}
 
 RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOptions& options,
                     std::vector<double> start_potential) {

@@ -15,12 +15,15 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "backend/min_cost_flow.hpp"
 #include "bimdf/problem.hpp"
 #include "bimdf/solve.hpp"
+#include "reduce/bmatching.hpp"
 #include "reduce/linearize.hpp"
+#include "reduce/matching_gadgets.hpp"
 
 namespace bimdf::detail {
 
@@ -56,6 +59,20 @@ struct RefineResult {
 // The residual pieces of every refinement round: unit pieces up to deviation U = 2 each way,
 // no tails (paper §3.9; linearize.hpp). Persistent rounds price their slots the same way.
 LinearizeOptions refinement_pieces();
+
+// A round's matching weight w in the blossom solver's integers: 2·llround(w·S), with S the
+// cost scale of the round's LP (residual_pruning.hpp), so that the LP's integer duals carry
+// over exactly and the gadgets' half units stay integral. Throws std::invalid_argument when
+// w·S leaves ±2^61 (the solver's own bound is lower; its callers fall back).
+int64_t doubled_matching_weight(double w, double cost_scale);
+
+// The blossom solver's start duals for a round's matching, in the doubled weights' unit: the
+// LP's node dual d(v) (`node_dual`, units of 1/S) on v's b-nodes, +d(v) on its heads 2v and
+// −d(v) on its tails 2v + 1 (bmatching.hpp), spread over the gadgets by gadget_duals.
+std::vector<int64_t> round_matching_duals(const BMatching& bmatching,
+                                          const MatchingReduction& reduction,
+                                          std::span<const int64_t> node_dual,
+                                          std::span<const int64_t> bedge_weight);
 
 // Requires a problem without outer edges and a flow feasible for it. Throws std::logic_error if
 // a round's matching has no perfect matching (the zero circulation always is one: a bug).

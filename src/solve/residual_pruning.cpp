@@ -27,9 +27,16 @@ int lp_scale_log2(const BiMcf& residual) {
 
 namespace {
 
-// The relaxation double cover of `residual` and its optimum.
-std::pair<DoubleCover, MinCostFlowResult> relaxation_optimum(
-    const BiMcf& residual, const std::vector<double>& start_potential, int scale_log2) {
+// The relaxation double cover of `residual`, its optimum and the optimum's value in scaled
+// costs (a 128-bit sum: each scaled cost is below 3·2^60, min_cost_flow.hpp).
+struct RelaxationOptimum {
+  DoubleCover dc;
+  MinCostFlowResult lp;
+  __int128 value = 0;
+};
+
+RelaxationOptimum relaxation_optimum(const BiMcf& residual,
+                                     const std::vector<double>& start_potential, int scale_log2) {
   for (int v = 0; v < residual.num_nodes(); ++v)
     if (residual.demand[v] != 0)
       throw std::invalid_argument("residual pruning needs zero demands (node " + std::to_string(v) +
@@ -40,7 +47,10 @@ std::pair<DoubleCover, MinCostFlowResult> relaxation_optimum(
     throw std::logic_error(
         "residual pruning: the LP relaxation of a circulation problem with "
         "finite capacities is not optimal");
-  return {std::move(dc), std::move(lp)};
+  __int128 value = 0;
+  for (int k = 0; k < dc.mcf.num_arcs(); ++k)
+    value += static_cast<__int128>(lp.scaled_cost[k]) * lp.flow[k];
+  return {std::move(dc), std::move(lp), value};
 }
 
 // d(v) = π(v⁻) − π(v⁺) (double cover nodes v⁺ = 2v, v⁻ = 2v + 1: double_cover.cpp).
@@ -61,16 +71,14 @@ std::vector<int64_t> integral_part(std::span<const int64_t> twice) {
 
 ResidualLp solve_residual_lp(const BiMcf& residual, const std::vector<double>& start_potential,
                              int scale_log2) {
-  auto [dc, lp] = relaxation_optimum(residual, start_potential, scale_log2);
+  const RelaxationOptimum optimum = relaxation_optimum(residual, start_potential, scale_log2);
+  const MinCostFlowResult& lp = optimum.lp;
   ResidualLp out;
   out.potential = potentials_in_cost_units(lp);
   out.lp_method = lp.method;
   out.cost_scale = lp.cost_scale;
-  __int128 lp_value = 0;
-  for (int k = 0; k < dc.mcf.num_arcs(); ++k)
-    lp_value += static_cast<__int128>(lp.scaled_cost[k]) * lp.flow[k];
-  out.proves_optimal = lp_value >= 0;
-  out.twice_flow = dc.lift(lp.flow, residual.num_arcs());
+  out.proves_optimal = optimum.value >= 0;
+  out.twice_flow = optimum.dc.lift(lp.flow, residual.num_arcs());
   if (!out.proves_optimal) out.integral_circulation = integral_part(out.twice_flow);
   out.node_dual.resize(residual.num_nodes());
   for (int v = 0; v < residual.num_nodes(); ++v) out.node_dual[v] = node_dual(lp, v);
@@ -82,17 +90,18 @@ ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>&
   const int n = residual.num_nodes(), m = residual.num_arcs();
   // Named references, not a structured binding: a lambda below uses `lp`, which C++17 (and
   // clang, which builds the fuzzers) does not allow to capture from a binding.
-  const auto optimum = relaxation_optimum(residual, start_potential, lp_scale_log2(residual));
-  const DoubleCover& dc = optimum.first;
-  const MinCostFlowResult& lp = optimum.second;
+  const RelaxationOptimum optimum =
+      relaxation_optimum(residual, start_potential, lp_scale_log2(residual));
+  const DoubleCover& dc = optimum.dc;
+  const MinCostFlowResult& lp = optimum.lp;
+  const __int128 lp_value = optimum.value;
   out.potential = potentials_in_cost_units(lp);
   out.lp_method = lp.method;
 
-  // 128-bit sums: each scaled cost and reduced cost is below 3·2^60 (min_cost_flow.hpp).
-  __int128 lp_value = 0, margin = 0;
+  // 128-bit sums: each reduced cost is below 3·2^60 (min_cost_flow.hpp).
+  __int128 margin = 0;
   std::vector<__int128> bound(m, 0);  // Σ over empty copies of r · (copy flow per unit of y)
   for (int k = 0; k < dc.mcf.num_arcs(); ++k) {
-    lp_value += static_cast<__int128>(lp.scaled_cost[k]) * lp.flow[k];
     const int a = dc.arc_of[k];
     const bool loop = residual.end_a[a].node == residual.end_b[a].node;
     if (lp.flow[k] == 0 && lp.reduced_cost[k] > 0)
