@@ -297,6 +297,26 @@ TEST(Exact, RefinementFromAnyStartingPotentialsReachesTheOptimum) {
   EXPECT_GT(compared, testing::scaled(100) / 2);
 }
 
+// Persistent rounds keep the first round's cost scale. Here the first round sees slopes of ±1
+// only, and each round can move 2 units around the cycle, so the round at x = 10 re-prices a
+// slot at 10^6 per unit, beyond the kept scale: refinement must hand over to fresh rounds
+// (after resuming before) and still end at the optimum, x = 10 on both edges.
+TEST(Exact, PersistentRoundsFallBackWhenASlopeLeavesTheKeptScale) {
+  Problem p;
+  const int u = p.add_node(), v = p.add_node();
+  p.add_edge(End{u, false}, End{v, true}, 0, 100, Cost::asym_abs_deviation(10, 1, 1e6));
+  p.add_edge(End{v, false}, End{u, true}, 0, 100, Cost::abs_deviation(10, 1));
+  detail::RefineOptions persistent;
+  persistent.matching = MatchingBackend::Persistent;
+  const detail::RefineResult r = detail::refine(p, {0, 0}, persistent);
+  ASSERT_TRUE(r.converged);
+  EXPECT_EQ(r.flow, (std::vector<int64_t>{10, 10}));
+  EXPECT_EQ(r.objective, 0);
+  EXPECT_EQ(r.persistent_fallbacks, 1);
+  EXPECT_GE(r.resumed_matchings, 1);
+  EXPECT_EQ(r.lemon_fallbacks, 0);
+}
+
 TEST(Exact, SimplifiedNodesMapBackToTheComponent) {
   // Node 0 passes flow from 1 on to 2 (a chain; 2 has a demand, so it does not pass flow on);
   // 3 has two outer edges, which end at the boundary node that outer-edge elimination adds.
