@@ -78,10 +78,6 @@ int64_t deviation_room(const Problem& p, int e, int64_t g, int direction) {
   return p.lower[e] == -kInfinity ? kInfinity : g - p.lower[e];
 }
 
-double piece_cost(const CostAlong& at, int64_t d, int64_t s) {
-  return (at(d + s) - at(d)) / static_cast<double>(s);
-}
-
 Linearization linearize(const Problem& p, std::span<const int64_t> guess,
                         const LinearizeOptions& opt) {
   Linearization lin;

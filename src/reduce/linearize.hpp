@@ -63,7 +63,9 @@ int64_t deviation_room(const Problem& problem, int e, int64_t g, int direction);
 // The per-unit cost of the piece from deviation d to d + s: (c(g ± (d+s)) − c(g ± d)) / s. The
 // price of every non-tail piece; refinement's persistent slots (persistent_rounds.cpp) use it
 // too, so that both price a step alike.
-double piece_cost(const CostAlong& at, int64_t d, int64_t s);
+inline double piece_cost(const CostAlong& at, int64_t d, int64_t s) {
+  return (at(d + s) - at(d)) / static_cast<double>(s);
+}
 
 // Requires a problem without outer edges and g within bounds. Throws std::overflow_error if a
 // residual demand leaves ±2^62.

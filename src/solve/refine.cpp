@@ -66,13 +66,6 @@ std::optional<std::vector<char>> solve_round_matching(
 
 }  // namespace
 
-int64_t doubled_matching_weight(double w, double cost_scale) {
-  const double scaled = w * cost_scale;
-  if (!(std::fabs(scaled) < 0x1p61))
-    throw std::invalid_argument("refinement: a matching weight beyond the cost scale");
-  return 2 * static_cast<int64_t>(std::llround(scaled));
-}
-
 std::vector<int64_t> round_matching_duals(const BMatching& bm, const MatchingReduction& mm,
                                           std::span<const int64_t> node_dual,
                                           std::span<const int64_t> bedge_weight) {

@@ -12,10 +12,12 @@
 // min_cost_flow.hpp, for costs that differ by less than its resolution).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "backend/min_cost_flow.hpp"
@@ -64,7 +66,12 @@ LinearizeOptions refinement_pieces();
 // cost scale of the round's LP (residual_pruning.hpp), so that the LP's integer duals carry
 // over exactly and the gadgets' half units stay integral. Throws std::invalid_argument when
 // w·S leaves ±2^61 (the solver's own bound is lower; its callers fall back).
-int64_t doubled_matching_weight(double w, double cost_scale);
+inline int64_t doubled_matching_weight(double w, double cost_scale) {
+  const double scaled = w * cost_scale;
+  if (!(std::fabs(scaled) < 0x1p61))
+    throw std::invalid_argument("refinement: a matching weight beyond the cost scale");
+  return 2 * static_cast<int64_t>(std::llround(scaled));
+}
 
 // The blossom solver's start duals for a round's matching, in the doubled weights' unit: the
 // LP's node dual d(v) (`node_dual`, units of 1/S) on v's b-nodes, +d(v) on its heads 2v and
