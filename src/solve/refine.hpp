@@ -73,9 +73,11 @@ inline int64_t doubled_matching_weight(double w, double cost_scale) {
   return 2 * static_cast<int64_t>(std::llround(scaled));
 }
 
-// The blossom solver's start duals for a round's matching, in the doubled weights' unit: the
-// LP's node dual d(v) (`node_dual`, units of 1/S) on v's b-nodes, +d(v) on its heads 2v and
-// −d(v) on its tails 2v + 1 (bmatching.hpp), spread over the gadgets by gadget_duals.
+// The blossom solver's start duals for a round's matching: the LP's node dual d(v)
+// (`node_dual`) on v's b-nodes, +d(v) on its heads 2v and −d(v) on its tails 2v + 1
+// (bmatching.hpp), spread over the gadgets by gadget_duals. No conversion is needed: the two
+// arcs of a b-edge's relaxation double cover have reduced costs that add up to 2·c·S less the
+// b-node duals at its ends, so these are already in the doubled weights' unit (1/S).
 std::vector<int64_t> round_matching_duals(const BMatching& bmatching,
                                           const MatchingReduction& reduction,
                                           std::span<const int64_t> node_dual,
