@@ -126,9 +126,8 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
     s.bedge_of_arc.assign(shape.num_arcs(), -1);
     for (int be = 0; be < bm.num_edges(); ++be)
       if (s.bm.arc_of_edge[be] >= 0) s.bedge_of_arc[s.bm.arc_of_edge[be]] = be;
-    std::vector<int64_t> weight(g.num_edges()), bedge_weight(bm.num_edges());
-    for (int k = 0; k < g.num_edges(); ++k) weight[k] = s.weight(g.weight[k]);
-    for (int be = 0; be < bm.num_edges(); ++be) bedge_weight[be] = s.weight(bm.weight[be]);
+    const std::vector<int64_t> weight = doubled_matching_weights(g.weight, s.scale);
+    std::vector<int64_t> bedge_weight = doubled_matching_weights(bm.weight, s.scale);
     // A disabled slot's gadget must start unused and tight (L–R), which gadget_duals gives a
     // b-edge of weight −∞: its L–copy edges impose nothing.
     for (int arc = 0; arc < shape.num_arcs(); ++arc)

@@ -40,12 +40,10 @@ std::optional<std::vector<char>> solve_round_matching(
   for (int e = 0; e < bm.num_edges(); ++e)
     if (arc_of_edge[e] >= 0) used[e] = static_cast<int>(pruned.twice_flow[arc_of_edge[e]] / 2);
   try {
-    std::vector<int64_t> weight(g.num_edges()), bedge_weight(bm.num_edges());
-    for (int e = 0; e < g.num_edges(); ++e)
-      weight[e] = doubled_matching_weight(g.weight[e], pruned.cost_scale);
-    for (int e = 0; e < bm.num_edges(); ++e)
-      bedge_weight[e] = doubled_matching_weight(bm.weight[e], pruned.cost_scale);
-    BlossomMatching solver(g.num_nodes, g.end_a, g.end_b, weight);
+    const std::vector<int64_t> bedge_weight =
+        doubled_matching_weights(bm.weight, pruned.cost_scale);
+    BlossomMatching solver(g.num_nodes, g.end_a, g.end_b,
+                           doubled_matching_weights(g.weight, pruned.cost_scale));
     solver.initial_duals(round_matching_duals(bm, mm, pruned.node_dual, bedge_weight))
         .initial_matching(gadget_matching(bm, mm, used));
     // Augmenting through nested blossoms recurses once per nesting level below the path's
@@ -65,6 +63,13 @@ std::optional<std::vector<char>> solve_round_matching(
 }
 
 }  // namespace
+
+std::vector<int64_t> doubled_matching_weights(std::span<const double> weights, double cost_scale) {
+  std::vector<int64_t> doubled(weights.size());
+  for (size_t k = 0; k < weights.size(); ++k)
+    doubled[k] = doubled_matching_weight(weights[k], cost_scale);
+  return doubled;
+}
 
 std::vector<int64_t> round_matching_duals(const BMatching& bm, const MatchingReduction& mm,
                                           std::span<const int64_t> node_dual,

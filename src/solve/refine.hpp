@@ -73,6 +73,9 @@ inline int64_t doubled_matching_weight(double w, double cost_scale) {
   return 2 * static_cast<int64_t>(std::llround(scaled));
 }
 
+// doubled_matching_weight of every weight in `weights` (a matching graph's or a b-matching's).
+std::vector<int64_t> doubled_matching_weights(std::span<const double> weights, double cost_scale);
+
 // The blossom solver's start duals for a round's matching: the LP's node dual d(v)
 // (`node_dual`) on v's b-nodes, +d(v) on its heads 2v and −d(v) on its tails 2v + 1
 // (bmatching.hpp), spread over the gadgets by gadget_duals. No conversion is needed: the two
