@@ -6,21 +6,56 @@
 
 namespace bimdf::detail {
 
-BMatchingReduction reduce_to_bmatching(const BiMcf& in, std::span<const int> k) {
+BMatchingReduction reduce_to_bmatching(const BiMcf& in, const Throughflow& tf) {
   BMatchingReduction r;
   BMatching& bm = r.bmatching;
   const int n = in.num_nodes();
-  if (static_cast<int>(k.size()) != n)
+  const std::span<const int> k = tf.limit;
+  if (static_cast<int>(k.size()) != n ||
+      (!tf.part_degree.empty() && static_cast<int>(tf.part_degree.size()) != n))
     throw std::invalid_argument("b-matching reduction: " + std::to_string(k.size()) +
                                 " throughflow limits for " + std::to_string(n) + " nodes");
+  auto part_degree = [&](int v) { return tf.part_degree.empty() ? 0 : tf.part_degree[v]; };
   auto side = [](End e) { return 2 * e.node + (e.head ? 0 : 1); };  // v_in = 2v, v_out = 2v+1
   bm.degree.resize(2 * n);
   for (int v = 0; v < n; ++v) {
-    if (k[v] < 1)
+    if (k[v] < 1 || part_degree(v) < 0)
       throw std::invalid_argument("b-matching reduction: throughflow limit " +
-                                  std::to_string(k[v]) + " at node " + std::to_string(v));
+                                  std::to_string(k[v]) + ", part degree " +
+                                  std::to_string(part_degree(v)) + " at node " + std::to_string(v));
+    if (in.demand[v] != 0)
+      throw std::invalid_argument("b-matching reduction needs zero demands (node " +
+                                  std::to_string(v) + ")");
     bm.degree[2 * v] = bm.degree[2 * v + 1] = k[v];
   }
+  r.side_of_bnode.resize(2 * n);
+  for (int s = 0; s < 2 * n; ++s) r.side_of_bnode[s] = s;
+  r.negated_dual.assign(2 * n, 0);
+
+  // Tiers: each side's ends counted, its parts appended after the 2n side b-nodes, which
+  // become the centres.
+  std::vector<int> ends(2 * n, 0), first_part(2 * n, -1), parts(2 * n, 0), next_end(2 * n, 0);
+  for (int i = 0; i < in.num_arcs(); ++i) {
+    const int a = side(in.end_a[i]), b = side(in.end_b[i]);
+    ++ends[a];
+    if (b != a) ++ends[b];
+  }
+  for (int s = 0; s < 2 * n; ++s) {
+    const int pd = part_degree(s / 2);
+    if (pd == 0) continue;
+    parts[s] = std::max(1, std::min((k[s / 2] + pd - 1) / pd, ends[s]));
+    first_part[s] = bm.num_nodes();
+    bm.degree.insert(bm.degree.end(), parts[s], pd);
+    r.side_of_bnode.insert(r.side_of_bnode.end(), parts[s], s);
+    r.negated_dual.insert(r.negated_dual.end(), parts[s], 0);
+    bm.degree[s] = pd * parts[s];
+    r.negated_dual[s] = 1;
+  }
+  auto attach = [&](int s) {
+    if (first_part[s] < 0) return s;
+    return first_part[s] + static_cast<int>(int64_t{next_end[s]++} * parts[s] / ends[s]);
+  };
+
   auto add = [&](int a, int b, int cap, double w, int arc) {
     bm.end_a.push_back(a);
     bm.end_b.push_back(b);
@@ -28,32 +63,48 @@ BMatchingReduction reduce_to_bmatching(const BiMcf& in, std::span<const int> k) 
     bm.weight.push_back(w);
     r.arc_of_edge.push_back(arc);
   };
-  for (int v = 0; v < n; ++v) {
-    if (in.demand[v] != 0)
-      throw std::invalid_argument("b-matching reduction needs zero demands (node " +
-                                  std::to_string(v) + ")");
-    add(2 * v, 2 * v + 1, k[v], 0.0, -1);
-  }
+  for (int v = 0; v < n; ++v)
+    if (part_degree(v) == 0) add(2 * v, 2 * v + 1, k[v], 0.0, -1);
   for (int i = 0; i < in.num_arcs(); ++i) {
-    const int a = side(in.end_a[i]), b = side(in.end_b[i]);
-    const int ka = k[in.end_a[i].node], kb = k[in.end_b[i].node];
-    const int64_t limit = a == b ? ka / 2 : std::min(ka, kb);
+    const int a = attach(side(in.end_a[i]));
+    const int b = side(in.end_b[i]) == side(in.end_a[i]) ? a : attach(side(in.end_b[i]));
+    const int64_t limit = a == b ? bm.degree[a] / 2 : std::min(bm.degree[a], bm.degree[b]);
     const int cap = static_cast<int>(std::min<int64_t>(in.capacity[i], limit));
     if (cap > 0) add(a, b, cap, -in.cost[i], i);
+  }
+  // Links before the centre edge: gadget_matching pairs weight-0 edges greedily in this order,
+  // which keeps the all-slack start perfect.
+  for (int v = 0; v < n; ++v) {
+    const int pd = part_degree(v);
+    if (pd == 0) continue;
+    for (int j = 0; j < parts[2 * v]; ++j) add(first_part[2 * v] + j, 2 * v, pd, 0.0, -1);
+    add(2 * v, 2 * v + 1, std::min(bm.degree[2 * v], bm.degree[2 * v + 1]), 0.0, -1);
+    for (int j = 0; j < parts[2 * v + 1]; ++j)
+      add(first_part[2 * v + 1] + j, 2 * v + 1, pd, 0.0, -1);
   }
   return r;
 }
 
-std::vector<int> refinement_throughflow(const BiMcf& bimcf) {
+int64_t matching_copies_bound(int limit, int part_degree) {
+  // Parts: ⌈K/P⌉·P < K + P per side, and the centre as many.
+  return part_degree == 0 ? 2 * int64_t{limit} : 4 * (int64_t{limit} + part_degree);
+}
+
+Throughflow refinement_throughflow(const BiMcf& bimcf) {
   std::vector<int> arcs(bimcf.num_nodes(), 0);
   for (int i = 0; i < bimcf.num_arcs(); ++i) {
     ++arcs[bimcf.end_a[i].node];
     ++arcs[bimcf.end_b[i].node];
   }
-  std::vector<int> k(arcs.size());
-  for (size_t v = 0; v < arcs.size(); ++v)
-    k[v] = std::clamp(2 * (arcs[v] / kArcsPerThroughflowPair), 2, kMaxThroughflow);
-  return k;
+  Throughflow tf;
+  tf.limit.assign(arcs.size(), 2);
+  tf.part_degree.assign(arcs.size(), 0);
+  for (size_t v = 0; v < arcs.size(); ++v) {
+    if (arcs[v] < kHubArcs) continue;
+    tf.limit[v] = std::min(2 * (arcs[v] / kArcsPerThroughflowPair), kMaxThroughflow);
+    tf.part_degree[v] = kTierPartDegree;
+  }
+  return tf;
 }
 
 std::vector<int64_t> BMatchingReduction::lift(std::span<const int> edge_value, int num_arcs) const {

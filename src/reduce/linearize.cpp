@@ -43,10 +43,10 @@ class PieceWriter {
 // where the cost is smallest (used by underestimating tails only).
 template <typename Minimizer>
 void add_pieces(PieceWriter& out, int64_t room, const CostAlong& at,
-                const Minimizer& minimizer_beyond, const LinearizeOptions& opt) {
+                const Minimizer& minimizer_beyond, const LinearizeOptions& opt, int max_deviation) {
   const int64_t s = opt.step;
   int64_t d = 0;
-  while (d + s <= opt.max_deviation && room - d >= s) {
+  while (d + s <= max_deviation && room - d >= s) {
     out.add(s, piece_cost(at, d, s));
     d += s;
   }
@@ -89,14 +89,16 @@ Linearization linearize(const Problem& p, std::span<const int64_t> guess,
     residual[a.node] -= static_cast<__int128>(a.sign()) * g;
     residual[b.node] -= static_cast<__int128>(b.sign()) * g;
     const Cost& c = p.cost[e];
+    const int window =
+        opt.edge_max_deviation.empty() ? opt.max_deviation : opt.edge_max_deviation[e];
     PieceWriter forward(lin, e, +1, a, b);
     add_pieces(
         forward, deviation_room(p, e, g, +1), CostAlong{c, g, +1},
-        [&](int64_t d) { return c.argmin(g + d, kInfinity) - g; }, opt);
+        [&](int64_t d) { return c.argmin(g + d, kInfinity) - g; }, opt, window);
     PieceWriter backward(lin, e, -1, End{a.node, !a.head}, End{b.node, !b.head});
     add_pieces(
         backward, deviation_room(p, e, g, -1), CostAlong{c, g, -1},
-        [&](int64_t d) { return g - c.argmin(-kInfinity, g - d); }, opt);
+        [&](int64_t d) { return g - c.argmin(-kInfinity, g - d); }, opt, window);
   }
   lin.mcf.demand.resize(p.num_nodes());
   for (int v = 0; v < p.num_nodes(); ++v)

@@ -36,6 +36,8 @@ struct LinearizeOptions {
   // by convexity that line stays below c — and on an unbounded tail whose slope is negative,
   // only up to the cost's minimizer m, then the slope c(m+1) − c(m) ≥ 0 from there.
   bool underestimating_tails = false;
+  // U per edge, in place of max_deviation where not empty.
+  std::span<const int> edge_max_deviation;
 };
 
 struct Linearization {

@@ -116,9 +116,13 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
     t = std::chrono::steady_clock::now();
     s.scale = lp.cost_scale;
     // The throughflow limits of a classic first round (its arc counts: merged, enabled only).
-    const std::vector<int> throughflow =
-        hub_throughflow_ ? refinement_throughflow(lin.mcf) : std::vector<int>(p.num_nodes(), 2);
-    out.max_throughflow = *std::max_element(throughflow.begin(), throughflow.end());
+    Throughflow throughflow;
+    if (hub_throughflow_) {
+      throughflow = refinement_throughflow(lin.mcf);
+    } else {
+      throughflow.limit.assign(p.num_nodes(), 2);
+    }
+    out.max_throughflow = *std::max_element(throughflow.limit.begin(), throughflow.limit.end());
     s.bm = reduce_to_bmatching(shape, throughflow);
     s.mm = reduce_to_perfect_matching(s.bm.bmatching);
     const BMatching& bm = s.bm.bmatching;
@@ -158,7 +162,7 @@ PersistentRound PersistentRounds::round(std::span<const int64_t> flow,
       used[s.bedge_of_arc[arc]] = static_cast<int>(std::min<int64_t>(units, 1));
       used[s.bedge_of_arc[arc + 1]] = static_cast<int>(units - std::min<int64_t>(units, 1));
     }
-    s.solver->initial_duals(round_matching_duals(bm, s.mm, lp.node_dual, bedge_weight))
+    s.solver->initial_duals(round_matching_duals(s.bm, s.mm, lp.node_dual, bedge_weight))
         .initial_matching(gadget_matching(bm, s.mm, used));
   } else {
     // The slots of every edge the last round changed get their new prices, and their gadgets

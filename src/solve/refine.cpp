@@ -22,6 +22,43 @@ namespace bimdf::detail {
 namespace {
 
 constexpr int kDeviation = 2;  // U = 2, paper §3.9 (the throughflow limits: bmatching.hpp)
+constexpr int kMaxDeviation = 64;
+
+// Windows that widen where a round used all of one. Any U ≥ 2 (and K ≥ 2) per edge keeps Thm
+// 3.8, but an edge far from its optimum crawls towards it by U a round: on the generated
+// 10^6-edge instance a loop at the border node 41 units off took a round for every 1–2 units.
+// So an edge that moved by its whole window has it doubled (up to kMaxDeviation), and its ends
+// get a throughflow limit of at least that (twice for a loop, which takes two units of its
+// node per unit), in their parts too when they have tiers — otherwise the node would hold the
+// edge back instead. Off (U = 2 everywhere) when `enabled` is false, the paper's rounds.
+struct RefinementWindows {
+  std::vector<int> deviation;    // U per edge
+  std::vector<int> throughflow;  // K per node at least, for its widened edges
+  const Problem& p;
+  bool enabled;
+
+  RefinementWindows(const Problem& problem, bool on)
+      : deviation(problem.num_edges(), kDeviation),
+        throughflow(problem.num_nodes(), 2),
+        p(problem),
+        enabled(on) {}
+
+  // Returns how many windows it widened.
+  int widen(std::span<const int64_t> flow, std::span<const int64_t> next) {
+    int widened = 0;
+    if (!enabled) return widened;
+    for (int e = 0; e < p.num_edges(); ++e) {
+      if (deviation[e] >= kMaxDeviation || std::abs(next[e] - flow[e]) < deviation[e]) continue;
+      ++widened;
+      deviation[e] *= 2;
+      const int a = p.end_a[e].node, b = p.end_b[e].node;
+      const int need = a == b ? 2 * deviation[e] : deviation[e];
+      throughflow[a] = std::max(throughflow[a], need);
+      throughflow[b] = std::max(throughflow[b], need);
+    }
+    return widened;
+  }
+};
 
 // The round's perfect matching by our blossom solver, warm-started from the pruning LP: its
 // integer costs (doubled) are the matching weights, so its duals carry over exactly (see
@@ -29,10 +66,14 @@ constexpr int kDeviation = 2;  // U = 2, paper §3.9 (the throughflow limits: bm
 // the input exceeds the solver's overflow bounds, and when the solver reports anything but an
 // optimum (the all-slack matching always exists, so "no perfect matching" would be our bug) or
 // fails an internal check; all but the first are counted in lemon_fallbacks.
-std::optional<std::vector<char>> solve_round_matching(
-    const BMatching& bm, std::span<const int> arc_of_edge, const MatchingReduction& mm,
-    const ResidualPruning& pruned, const RefineOptions& options, RefineResult& r) {
+std::optional<std::vector<char>> solve_round_matching(const BMatchingReduction& red,
+                                                      const MatchingReduction& mm,
+                                                      const ResidualPruning& pruned,
+                                                      const RefineOptions& options,
+                                                      RefineResult& r) {
   if (options.matching == MatchingBackend::Lemon) return max_weight_perfect_matching(mm.graph);
+  const BMatching& bm = red.bmatching;
+  const std::vector<int>& arc_of_edge = red.arc_of_edge;
   const MatchingGraph& g = mm.graph;
   // The LP's integral part: one unit on each reduced arc it fills (2y = 2); gadget_matching
   // uses it on capacitated b-edges only (uncapacitated ones get slack pairs).
@@ -44,7 +85,7 @@ std::optional<std::vector<char>> solve_round_matching(
         doubled_matching_weights(bm.weight, pruned.cost_scale);
     BlossomMatching solver(g.num_nodes, g.end_a, g.end_b,
                            doubled_matching_weights(g.weight, pruned.cost_scale));
-    solver.initial_duals(round_matching_duals(bm, mm, pruned.node_dual, bedge_weight))
+    solver.initial_duals(round_matching_duals(red, mm, pruned.node_dual, bedge_weight))
         .initial_matching(gadget_matching(bm, mm, used));
     // Augmenting through nested blossoms recurses once per nesting level below the path's
     // own (rotate_to): the same headroom as for LEMON (backend/perfect_matching.cpp).
@@ -71,13 +112,16 @@ std::vector<int64_t> doubled_matching_weights(std::span<const double> weights, d
   return doubled;
 }
 
-std::vector<int64_t> round_matching_duals(const BMatching& bm, const MatchingReduction& mm,
+std::vector<int64_t> round_matching_duals(const BMatchingReduction& red,
+                                          const MatchingReduction& mm,
                                           std::span<const int64_t> node_dual,
                                           std::span<const int64_t> bedge_weight) {
+  const BMatching& bm = red.bmatching;
   std::vector<int64_t> bnode_dual(bm.num_nodes());
-  for (int v = 0; 2 * v < bm.num_nodes(); ++v) {
-    bnode_dual[2 * v] = node_dual[v];
-    bnode_dual[2 * v + 1] = -node_dual[v];
+  for (int b = 0; b < bm.num_nodes(); ++b) {
+    const int s = red.side_of_bnode[b];
+    const int64_t d = s % 2 == 0 ? node_dual[s / 2] : -node_dual[s / 2];
+    bnode_dual[b] = red.negated_dual[b] ? -d : d;
   }
   return gadget_duals(bm, mm, bnode_dual, bedge_weight);
 }
@@ -88,7 +132,8 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
   RefineResult r;
   r.flow = std::move(flow);
   r.objective = objective(p, r.flow);
-  const LinearizeOptions unit_pieces = refinement_pieces();
+  LinearizeOptions unit_pieces = refinement_pieces();
+  RefinementWindows windows(p, options.hub_throughflow);
   // Strict improvement beyond rounding noise; otherwise x is optimal (Thm 3.8).
   auto improves = [&](double next_objective) {
     return next_objective < r.objective - 1e-12 * std::max(1.0, std::fabs(r.objective));
@@ -150,10 +195,11 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
       continue;
     }
     auto t = std::chrono::steady_clock::now();
+    unit_pieces.edge_max_deviation = windows.deviation;
     const Linearization lin = linearize(p, r.flow, unit_pieces);
     r.time_build_s += seconds_since(t);
     t = std::chrono::steady_clock::now();
-    ResidualPruning pruned = prune_residual(lin.mcf, lp_potential);
+    ResidualPruning pruned = prune_residual(lin.mcf, lp_potential, windows.throughflow);
     lp_potential = std::move(pruned.potential);
     r.lps.add(pruned.lp_method);
     r.time_pruning_s += seconds_since(t);
@@ -166,15 +212,26 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
       std::vector<int64_t> next = lin.lift(pruned.integral_circulation);
       const double next_objective = objective(p, next);
       if (improves(next_objective)) {
+        r.widened_windows += windows.widen(r.flow, next);
         accept(std::move(next), next_objective);
         continue;
       }
     }
     t = std::chrono::steady_clock::now();
-    const std::vector<int> throughflow = options.hub_throughflow
-                                             ? refinement_throughflow(pruned.reduced)
-                                             : std::vector<int>(pruned.reduced.num_nodes(), 2);
-    for (int k : throughflow) r.max_throughflow = std::max(r.max_throughflow, k);
+    Throughflow throughflow;
+    if (options.hub_throughflow) {
+      throughflow = refinement_throughflow(pruned.reduced);
+    } else {
+      throughflow.limit.assign(pruned.reduced.num_nodes(), 2);
+    }
+    for (int v = 0; v < pruned.reduced.num_nodes(); ++v) {
+      // What the node's widened edges need, in its limit and in each of its parts.
+      const int need = windows.throughflow[pruned.residual_node[v]];
+      throughflow.limit[v] = std::max(throughflow.limit[v], need);
+      if (!throughflow.part_degree.empty() && throughflow.part_degree[v] > 0)
+        throughflow.part_degree[v] = std::max(throughflow.part_degree[v], need);
+      r.max_throughflow = std::max(r.max_throughflow, throughflow.limit[v]);
+    }
     const BMatchingReduction bm = reduce_to_bmatching(pruned.reduced, throughflow);
     const MatchingReduction mm = reduce_to_perfect_matching(bm.bmatching);
     r.matching_nodes = std::max<int64_t>(r.matching_nodes, mm.graph.num_nodes);
@@ -182,7 +239,7 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     r.time_build_s += seconds_since(t);
     t = std::chrono::steady_clock::now();
     const std::optional<std::vector<char>> matched =
-        solve_round_matching(bm.bmatching, bm.arc_of_edge, mm, pruned, options, r);
+        solve_round_matching(bm, mm, pruned, options, r);
     r.time_matching_s += seconds_since(t);
     ++r.matchings;
     if (!matched)
@@ -197,6 +254,7 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
       proven_optimal();
       return r;
     }
+    r.widened_windows += windows.widen(r.flow, next);
     accept(std::move(next), next_objective);
   }
 }

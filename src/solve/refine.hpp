@@ -33,8 +33,10 @@ struct RefineOptions {
   MatchingBackend matching = MatchingBackend::Blossom;
   int64_t max_rounds = std::numeric_limits<int64_t>::max();
   double time_limit_s = std::numeric_limits<double>::infinity();
-  // Throughflow limits above 2 at hubs (bmatching.hpp: refinement_throughflow); false: K = 2 at
-  // every node, the paper's reduction (for comparisons). Exact either way.
+  // Throughflow limits above 2 at hubs, in tiers (bmatching.hpp: refinement_throughflow), and
+  // windows that widen where a round used all of one (refine.cpp: RefinementWindows); false:
+  // K = 2 at every node and U = 2 on every edge, the paper's rounds (for comparisons). Exact
+  // either way.
   bool hub_throughflow = true;
   // Called at the end of every round with the rounds done, the objective of the problem's
   // current flow, and whether the round lowered it (false: the last round, which proves the
@@ -52,6 +54,7 @@ struct RefineResult {
   int64_t matching_nodes = 0, matching_edges = 0;  // of the largest round
   int64_t matching_free_vertices = 0;  // vertices the warm start left free, summed over rounds
   int max_throughflow = 0;             // the largest throughflow limit of any round's b-matching
+  int64_t widened_windows = 0;         // edges whose window a round widened, counted per round
   int64_t lemon_fallbacks = 0;    // rounds our solver left to LEMON (weights too large, or a bug)
   int64_t resumed_matchings = 0;  // matchings started from the previous round's (persistent)
   int64_t persistent_fallbacks = 0;  // persistent rounds that handed over to fresh ones
@@ -77,11 +80,12 @@ inline int64_t doubled_matching_weight(double w, double cost_scale) {
 std::vector<int64_t> doubled_matching_weights(std::span<const double> weights, double cost_scale);
 
 // The blossom solver's start duals for a round's matching: the LP's node dual d(v)
-// (`node_dual`) on v's b-nodes, +d(v) on its heads 2v and −d(v) on its tails 2v + 1
-// (bmatching.hpp), spread over the gadgets by gadget_duals. No conversion is needed: the two
+// (`node_dual`) on v's b-nodes, +d(v) on its heads side and −d(v) on its tails side, negated
+// on a tier's centre (bmatching.hpp: side_of_bnode), spread over the gadgets by gadget_duals.
+// A tier's links and centre edge, weight 0, are then tight. No conversion is needed: the two
 // arcs of a b-edge's relaxation double cover have reduced costs that add up to 2·c·S less the
 // b-node duals at its ends, so these are already in the doubled weights' unit (1/S).
-std::vector<int64_t> round_matching_duals(const BMatching& bmatching,
+std::vector<int64_t> round_matching_duals(const BMatchingReduction& bmatching,
                                           const MatchingReduction& reduction,
                                           std::span<const int64_t> node_dual,
                                           std::span<const int64_t> bedge_weight);

@@ -11,14 +11,19 @@
 
 namespace bimdf::detail {
 
-int lp_scale_log2(const BiMcf& residual) {
+int lp_scale_log2(const BiMcf& residual, std::span<const int> min_throughflow) {
   // 2^(L+1)·(matching nodes)/(LP nodes + 1) ≤ 2^57 leaves the bound's other half for rounding.
   double capacity = 0;
   for (int64_t c : residual.capacity) capacity += static_cast<double>(c);
   const double lp_nodes = 2.0 * residual.num_nodes() + 1;
   // Pruning only removes arcs, so the reduced residual's throughflow limits are at most these.
   double copies = 0;
-  for (int k : refinement_throughflow(residual)) copies += 2.0 * k;
+  const Throughflow tf = refinement_throughflow(residual);
+  for (int v = 0; v < residual.num_nodes(); ++v) {
+    const int need = min_throughflow.empty() ? 2 : min_throughflow[v];
+    const int pd = tf.part_degree[v] == 0 ? 0 : std::max(tf.part_degree[v], need);
+    copies += static_cast<double>(matching_copies_bound(std::max(tf.limit[v], need), pd));
+  }
   const double matching_nodes = copies + 2 * capacity + 1;
   const int needed =
       static_cast<int>(std::ceil(std::log2(std::max(1.0, matching_nodes / lp_nodes))));
@@ -85,13 +90,14 @@ ResidualLp solve_residual_lp(const BiMcf& residual, const std::vector<double>& s
   return out;
 }
 
-ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>& start_potential) {
+ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>& start_potential,
+                               std::span<const int> min_throughflow) {
   ResidualPruning out;
   const int n = residual.num_nodes(), m = residual.num_arcs();
   // Named references, not a structured binding: a lambda below uses `lp`, which C++17 (and
   // clang, which builds the fuzzers) does not allow to capture from a binding.
   const RelaxationOptimum optimum =
-      relaxation_optimum(residual, start_potential, lp_scale_log2(residual));
+      relaxation_optimum(residual, start_potential, lp_scale_log2(residual, min_throughflow));
   const DoubleCover& dc = optimum.dc;
   const MinCostFlowResult& lp = optimum.lp;
   const __int128 lp_value = optimum.value;
@@ -131,6 +137,7 @@ ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>&
       node_of[e.node] = out.reduced.num_nodes();
       out.reduced.demand.push_back(0);
       out.node_dual.push_back(node_dual(lp, e.node));
+      out.residual_node.push_back(e.node);
     }
     return End{node_of[e.node], e.head};
   };

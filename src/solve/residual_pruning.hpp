@@ -41,7 +41,8 @@ struct ResidualPruning {
   std::vector<int64_t> integral_circulation;
   // The arcs not fixed at 0, as a Bi-MCF (zero demands) on the nodes they touch.
   BiMcf reduced;
-  std::vector<int> arc_of;  // reduced arc → residual arc
+  std::vector<int> arc_of;         // reduced arc → residual arc
+  std::vector<int> residual_node;  // reduced node → residual node
   int64_t fixed_arcs = 0;
   // The LP's integer cost scale S, d(v) per node of `reduced` (in units of 1/S), and the LP's
   // flow per arc of `reduced`, doubled (2y: 1 where the LP splits a unit).
@@ -62,7 +63,7 @@ struct ResidualPruning {
 // its throughflow limit K (refinement_throughflow) and at most 2 gadget nodes per unit of arc
 // capacity (bmatching.hpp, matching_gadgets.hpp) — would
 // push the doubled integer costs past the blossom solver's bound |w|·(nodes + 1) < 2^58.
-int lp_scale_log2(const BiMcf& residual);
+int lp_scale_log2(const BiMcf& residual, std::span<const int> min_throughflow = {});
 
 // The residual's LP relaxation alone, for every node and arc (no fixing): what persistent
 // refinement rounds (persistent_rounds.hpp) start their matching from. `residual` must have
@@ -85,8 +86,11 @@ ResidualLp solve_residual_lp(const BiMcf& residual, const std::vector<double>& s
 // `residual` must have zero demands and finite capacities. Throws std::logic_error if its LP
 // relaxation is not optimal (the zero circulation is feasible and capacities are finite).
 // `start_potential`, when not empty, are potentials per double-cover node to warm-start the LP
-// from (a previous round's `potential`).
+// from (a previous round's `potential`). `min_throughflow`, when not empty, are throughflow
+// limits per node that the round's b-matching raises refinement_throughflow's to (and its
+// parts' degrees, at tiered nodes), for the scale bound.
 ResidualPruning prune_residual(const BiMcf& residual,
-                               const std::vector<double>& start_potential = {});
+                               const std::vector<double>& start_potential = {},
+                               std::span<const int> min_throughflow = {});
 
 }  // namespace bimdf::detail

@@ -262,8 +262,9 @@ TEST(BlossomMatching, PruningLpScaleLeavesTheMatchingItsHeadroom) {
   const bimdf::detail::ResidualPruning pruned = bimdf::detail::prune_residual(residual);
   ASSERT_FALSE(pruned.proves_optimal);
   // The limits refinement uses: above 2 at these hubs, so more copies per node.
-  const std::vector<int> throughflow = bimdf::detail::refinement_throughflow(pruned.reduced);
-  EXPECT_GT(*std::max_element(throughflow.begin(), throughflow.end()), 2);
+  const bimdf::detail::Throughflow throughflow =
+      bimdf::detail::refinement_throughflow(pruned.reduced);
+  EXPECT_GT(*std::max_element(throughflow.limit.begin(), throughflow.limit.end()), 2);
   const auto bm = bimdf::detail::reduce_to_bmatching(pruned.reduced, throughflow);
   const auto mm = bimdf::detail::reduce_to_perfect_matching(bm.bmatching);
   std::vector<int64_t> weight;

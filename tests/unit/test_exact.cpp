@@ -177,15 +177,16 @@ TEST(ExactRandom, ThreeHundredMediumInstancesMatchTheMilp) {
   std::cout << "[ oracle   ] mean size " << edges / t.instances << " edges\n";
 }
 
-// Nodes with many arcs get throughflow limits above 2 in refinement (bmatching.hpp:
-// refinement_throughflow). Random problems plus a hub joined to the other nodes 120 times reach
-// the same optimum as with the paper's K = 2 everywhere (checked against brute force and CBC by
-// the tests above; CBC itself takes minutes on these hubs), in no more rounds in total.
+// Nodes with many arcs get throughflow limits above 2 in refinement, in tiers (bmatching.hpp:
+// refinement_throughflow), and windows widen where a round used all of one (refine.cpp). Random
+// problems plus a hub joined to the other nodes 120 times reach the same optimum as with the
+// paper's K = 2 and U = 2 everywhere (checked against brute force and CBC by the tests above;
+// CBC itself takes minutes on these hubs), in no more rounds in total.
 TEST(Exact, HubThroughflowReachesTheSameOptimum) {
   std::mt19937_64 rng(41);
   const testing::RandomProblemOptions opt{
       .min_nodes = 10, .max_nodes = 30, .min_edges = 20, .max_edges = 60, .outer_edges = false};
-  int compared = 0, hubs_above_two = 0;
+  int compared = 0, hubs_above_two = 0, widened = 0;
   int64_t rounds_paper = 0, rounds_hub = 0;
   for (int i = 0; i < testing::scaled(100); ++i) {
     Problem p = testing::random_problem(rng, opt);
@@ -217,13 +218,16 @@ TEST(Exact, HubThroughflowReachesTheSameOptimum) {
     // A matching was built with the hub's limit above 2 (not only the LP's shortcuts).
     EXPECT_EQ(a.max_throughflow, a.matchings > 0 ? 2 : 0) << "problem " << i;
     hubs_above_two += b.max_throughflow > 2;
+    widened += b.widened_windows > 0;
+    EXPECT_EQ(a.widened_windows, 0) << "problem " << i;
   }
   EXPECT_GT(compared, testing::scaled(100) / 2);
   EXPECT_GT(hubs_above_two, compared / 2);
+  EXPECT_GT(widened, compared / 10);
   EXPECT_LE(rounds_hub, rounds_paper);
   std::cout << "[ hubs     ] " << compared << " problems, a matching with a limit above 2 in "
-            << hubs_above_two << ", rounds " << rounds_paper << " (K = 2) vs " << rounds_hub
-            << "\n";
+            << hubs_above_two << ", windows widened in " << widened << ", rounds " << rounds_paper
+            << " (K = 2) vs " << rounds_hub << "\n";
 }
 
 TEST(Exact, ResultDoesNotDependOnTheThreadCount) {

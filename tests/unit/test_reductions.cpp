@@ -3,7 +3,9 @@
 // that the reduction loses nothing: both optima agree, and so does infeasibility.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <stdexcept>
 
@@ -23,8 +25,8 @@
 #include "reduce/outer_edges.hpp"
 #include "reduce/parity.hpp"
 #include "reduce/phase_one.hpp"
-#include "solve/residual_pruning.hpp"
 #include "solve/refine.hpp"
+#include "solve/residual_pruning.hpp"
 #include "test_helpers.hpp"
 
 namespace bimdf {
@@ -283,6 +285,61 @@ TEST(Reductions, ResidualPruningKeepsEveryImprovingCirculation) {
             << " integral optima, " << improving << " improving, " << fixed << " arcs fixed\n";
 }
 
+// A tiny zero-demand Bi-MCF for the b-matching tests: up to `max_nodes` nodes, up to 6 arcs.
+detail::BiMcf tiny_bimcf(std::mt19937_64& rng, int max_nodes) {
+  detail::BiMcf c;
+  const int n = 1 + static_cast<int>(rng() % max_nodes), m = static_cast<int>(rng() % 7);
+  c.demand.assign(n, 0);
+  for (int a = 0; a < m; ++a) {
+    c.end_a.push_back(End{static_cast<int>(rng() % n), rng() % 2 == 0});
+    c.end_b.push_back(End{static_cast<int>(rng() % n), rng() % 2 == 0});
+    c.capacity.push_back(1 + static_cast<int64_t>(rng() % 2));
+    c.cost.push_back(static_cast<double>(static_cast<int>(rng() % 9) - 5));
+  }
+  return c;
+}
+
+// The cheapest circulation y (0 ≤ y ≤ capacity) that `within_limits` accepts, by enumeration:
+// its cost (0, the zero circulation, at most).
+double cheapest_circulation(const detail::BiMcf& c,
+                            const std::function<bool(const std::vector<int64_t>&)>& within_limits) {
+  const int n = c.num_nodes(), m = c.num_arcs();
+  double best = 0;
+  std::vector<int64_t> y(m, 0);
+  while (true) {
+    std::vector<int64_t> balance(n, 0);
+    double cost = 0;
+    for (int a = 0; a < m; ++a) {
+      for (const End& e : {c.end_a[a], c.end_b[a]}) balance[e.node] += e.sign() * y[a];
+      cost += c.cost[a] * static_cast<double>(y[a]);
+    }
+    if (std::all_of(balance.begin(), balance.end(), [](int64_t b) { return b == 0; }) &&
+        within_limits(y))
+      best = std::min(best, cost);
+    int a = 0;
+    while (a < m && y[a] == c.capacity[a]) y[a++] = 0;
+    if (a == m) break;
+    ++y[a];
+  }
+  return best;
+}
+
+// The circulation the b-matching reduction's maximum-weight perfect matching (gadgets, LEMON)
+// gives.
+std::vector<int64_t> bmatching_circulation(const detail::BiMcf& c, const detail::Throughflow& tf) {
+  const detail::BMatchingReduction bm = detail::reduce_to_bmatching(c, tf);
+  const detail::MatchingReduction mm = detail::reduce_to_perfect_matching(bm.bmatching);
+  const auto matched = detail::max_weight_perfect_matching(mm.graph);
+  if (!matched) return {};  // a failure: the all-slack matching always exists
+  return bm.lift(mm.lift(*matched, bm.bmatching.num_edges()), c.num_arcs());
+}
+
+double circulation_cost(const detail::BiMcf& c, const std::vector<int64_t>& y) {
+  double cost = 0;
+  for (int a = 0; a < c.num_arcs(); ++a) cost += c.cost[a] * static_cast<double>(y[a]);
+  return cost;
+}
+
 // The b-matching reduction with a throughflow limit per node (bmatching.hpp): the maximum-weight
 // perfect b-matching, through the perfect-matching gadgets and LEMON, is the cheapest
 // circulation whose head-side flow at each node v stays within K(v), found by enumeration.
@@ -290,53 +347,93 @@ TEST(Reductions, BMatchingIsTheCheapestCirculationWithinEachNodesThroughflow) {
   std::mt19937_64 rng(31);
   int nonzero = 0;
   for (int i = 0; i < testing::scaled(600); ++i) {
-    detail::BiMcf c;
-    const int n = 1 + static_cast<int>(rng() % 4), m = static_cast<int>(rng() % 7);
-    c.demand.assign(n, 0);
-    for (int a = 0; a < m; ++a) {
-      c.end_a.push_back(End{static_cast<int>(rng() % n), rng() % 2 == 0});
-      c.end_b.push_back(End{static_cast<int>(rng() % n), rng() % 2 == 0});
-      c.capacity.push_back(1 + static_cast<int64_t>(rng() % 2));
-      c.cost.push_back(static_cast<double>(static_cast<int>(rng() % 9) - 5));
-    }
+    const detail::BiMcf c = tiny_bimcf(rng, 4);
+    const int n = c.num_nodes();
     std::vector<int> k(n);
     for (int& kv : k) kv = 1 + static_cast<int>(rng() % 4);
-    // Enumeration over every arc flow within capacity.
-    double best = 0;  // the zero circulation
-    std::vector<int64_t> y(m, 0);
-    while (true) {
-      std::vector<int64_t> balance(n, 0), head_side(n, 0);
-      double cost = 0;
-      for (int a = 0; a < m; ++a) {
-        for (const End& e : {c.end_a[a], c.end_b[a]}) {
-          balance[e.node] += e.sign() * y[a];
+    const double best = cheapest_circulation(c, [&](const std::vector<int64_t>& y) {
+      std::vector<int64_t> head_side(n, 0);
+      for (int a = 0; a < c.num_arcs(); ++a)
+        for (const End& e : {c.end_a[a], c.end_b[a]})
           if (e.head) head_side[e.node] += y[a];
-        }
-        cost += c.cost[a] * static_cast<double>(y[a]);
-      }
-      bool ok = true;
-      for (int v = 0; v < n; ++v) ok = ok && balance[v] == 0 && head_side[v] <= k[v];
-      if (ok) best = std::min(best, cost);
-      int a = 0;
-      while (a < m && y[a] == c.capacity[a]) y[a++] = 0;
-      if (a == m) break;
-      ++y[a];
-    }
-    const detail::BMatchingReduction bm = detail::reduce_to_bmatching(c, k);
-    const detail::MatchingReduction mm = detail::reduce_to_perfect_matching(bm.bmatching);
-    const auto matched = detail::max_weight_perfect_matching(mm.graph);
-    ASSERT_TRUE(matched.has_value()) << "instance " << i;  // the all-slack matching
-    const std::vector<int64_t> flow =
-        bm.lift(mm.lift(*matched, bm.bmatching.num_edges()), c.num_arcs());
-    double cost = 0;
-    for (int a = 0; a < m; ++a) cost += c.cost[a] * static_cast<double>(flow[a]);
-    EXPECT_EQ(cost, best) << "instance " << i;
+      for (int v = 0; v < n; ++v)
+        if (head_side[v] > k[v]) return false;
+      return true;
+    });
+    const std::vector<int64_t> flow = bmatching_circulation(c, {k, {}});
+    ASSERT_EQ(flow.size(), c.capacity.size()) << "instance " << i;
+    EXPECT_EQ(circulation_cost(c, flow), best) << "instance " << i;
     nonzero += best < 0;
   }
   EXPECT_GT(nonzero, testing::scaled(600) / 10);
 }
 
-// Refinement's throughflow limits: 2 at ordinary nodes, more at hubs, at most kMaxThroughflow.
+// The same with tiers (bmatching.hpp): a tiered node's limit is per part, the i-th of the E arc
+// ends at a side going to part ⌊i·parts/E⌋ (parts = min(⌈K/P⌉, E), at least 1; a loop is one
+// end that takes two units), each part carrying at most its degree P units.
+TEST(Reductions, TieredBMatchingIsTheCheapestCirculationWithinEachPartsLimit) {
+  std::mt19937_64 rng(37);
+  constexpr int kTierAbove = 2, kPartDegree = 2;
+  int nonzero = 0, tiered_used = 0;
+  for (int i = 0; i < testing::scaled(600); ++i) {
+    const detail::BiMcf c = tiny_bimcf(rng, 3);
+    const int n = c.num_nodes(), m = c.num_arcs();
+    std::vector<int> k(n);
+    for (int& kv : k) kv = 1 + static_cast<int>(rng() % 6);
+    // Each side's ends in arc order, with the part they fall into.
+    auto side = [](End e) { return 2 * e.node + (e.head ? 0 : 1); };
+    std::vector<int> ends(2 * n, 0);
+    for (int a = 0; a < m; ++a) {
+      ++ends[side(c.end_a[a])];
+      if (side(c.end_b[a]) != side(c.end_a[a])) ++ends[side(c.end_b[a])];
+    }
+    std::vector<int> parts(2 * n), seen(2 * n, 0), part_a(m), part_b(m);
+    for (int s = 0; s < 2 * n; ++s)
+      parts[s] = std::max(1, std::min((k[s / 2] + kPartDegree - 1) / kPartDegree, ends[s]));
+    for (int a = 0; a < m; ++a) {
+      const int sa = side(c.end_a[a]), sb = side(c.end_b[a]);
+      part_a[a] = seen[sa]++ * parts[sa] / ends[sa];
+      part_b[a] = sb == sa ? part_a[a] : seen[sb]++ * parts[sb] / ends[sb];
+    }
+    const double best = cheapest_circulation(c, [&](const std::vector<int64_t>& y) {
+      std::vector<int64_t> head_side(n, 0);
+      std::vector<std::vector<int64_t>> part_use(2 * n);
+      for (int s = 0; s < 2 * n; ++s) part_use[s].assign(parts[s], 0);
+      for (int a = 0; a < m; ++a) {
+        for (const End& e : {c.end_a[a], c.end_b[a]})
+          if (e.head) head_side[e.node] += y[a];
+        part_use[side(c.end_a[a])][part_a[a]] += y[a];
+        part_use[side(c.end_b[a])][part_b[a]] += y[a];
+      }
+      for (int v = 0; v < n; ++v) {
+        if (k[v] <= kTierAbove && head_side[v] > k[v]) return false;
+        if (k[v] <= kTierAbove) continue;
+        for (int s : {2 * v, 2 * v + 1})
+          for (int64_t u : part_use[s])
+            if (u > kPartDegree) return false;
+      }
+      return true;
+    });
+    detail::Throughflow tf{k, std::vector<int>(n, 0)};
+    for (int v = 0; v < n; ++v)
+      if (k[v] > kTierAbove) tf.part_degree[v] = kPartDegree;
+    const std::vector<int64_t> flow = bmatching_circulation(c, tf);
+    ASSERT_EQ(flow.size(), c.capacity.size()) << "instance " << i;
+    EXPECT_EQ(circulation_cost(c, flow), best) << "instance " << i;
+    nonzero += best < 0;
+    bool uses_tier = false;
+    for (int a = 0; a < m; ++a)
+      uses_tier =
+          uses_tier ||
+          (flow[a] > 0 && (k[c.end_a[a].node] > kTierAbove || k[c.end_b[a].node] > kTierAbove));
+    tiered_used += uses_tier;
+  }
+  EXPECT_GT(nonzero, testing::scaled(600) / 10);
+  EXPECT_GT(tiered_used, testing::scaled(600) / 10);
+}
+
+// Refinement's throughflow limits: 2 at ordinary nodes, more at hubs (in tiers), at most
+// kMaxThroughflow.
 TEST(Reductions, HubsGetLargerThroughflowLimits) {
   detail::BiMcf c;
   c.demand.assign(4, 0);
@@ -351,10 +448,14 @@ TEST(Reductions, HubsGetLargerThroughflowLimits) {
   arcs(0, 1, 127);  // node 0: 127 arcs, node 1: 127 + 10
   arcs(1, 2, 10);   // node 2: 10 + 3000
   arcs(2, 3, 3000);
-  const std::vector<int> k = detail::refinement_throughflow(c);
-  EXPECT_EQ(k, (std::vector<int>{2, 4, detail::kMaxThroughflow, detail::kMaxThroughflow}));
+  const detail::Throughflow tf = detail::refinement_throughflow(c);
+  const int pd = detail::kTierPartDegree;
+  EXPECT_EQ(tf.limit, (std::vector<int>{2, 34, detail::kMaxThroughflow, detail::kMaxThroughflow}));
+  EXPECT_EQ(tf.part_degree, (std::vector<int>{0, pd, pd, pd}));
   c.end_a.resize(137), c.end_b.resize(137), c.capacity.resize(137), c.cost.resize(137);
-  EXPECT_EQ(detail::refinement_throughflow(c), (std::vector<int>{2, 4, 2, 2}));
+  const detail::Throughflow fewer = detail::refinement_throughflow(c);
+  EXPECT_EQ(fewer.limit, (std::vector<int>{2, 34, 2, 2}));
+  EXPECT_EQ(fewer.part_degree, (std::vector<int>{0, pd, 0, 0}));
 }
 
 // Phase 1 (the approximation's last resort) with exact refinement: the artificial flow goes to
