@@ -30,30 +30,29 @@ BMatchingReduction reduce_to_bmatching(const BiMcf& in, const Throughflow& tf) {
   }
   r.side_of_bnode.resize(2 * n);
   for (int s = 0; s < 2 * n; ++s) r.side_of_bnode[s] = s;
-  r.negated_dual.assign(2 * n, 0);
 
-  // Tiers: each side's ends counted, its parts appended after the 2n side b-nodes, which
-  // become the centres.
-  std::vector<int> ends(2 * n, 0), first_part(2 * n, -1), parts(2 * n, 0), next_end(2 * n, 0);
+  // Tiers: both sides get the same number of parts, the side's own b-node being its first.
+  std::vector<int> ends(2 * n, 0), parts(n, 0), first_part(2 * n, -1), next_end(2 * n, 0);
   for (int i = 0; i < in.num_arcs(); ++i) {
     const int a = side(in.end_a[i]), b = side(in.end_b[i]);
     ++ends[a];
     if (b != a) ++ends[b];
   }
-  for (int s = 0; s < 2 * n; ++s) {
-    const int pd = part_degree(s / 2);
+  for (int v = 0; v < n; ++v) {
+    const int pd = part_degree(v);
     if (pd == 0) continue;
-    parts[s] = std::max(1, std::min((k[s / 2] + pd - 1) / pd, ends[s]));
-    first_part[s] = bm.num_nodes();
-    bm.degree.insert(bm.degree.end(), parts[s], pd);
-    r.side_of_bnode.insert(r.side_of_bnode.end(), parts[s], s);
-    r.negated_dual.insert(r.negated_dual.end(), parts[s], 0);
-    bm.degree[s] = pd * parts[s];
-    r.negated_dual[s] = 1;
+    parts[v] = std::max(1, std::min((k[v] + pd - 1) / pd, std::max(ends[2 * v], ends[2 * v + 1])));
+    for (int s : {2 * v, 2 * v + 1}) {
+      bm.degree[s] = pd;
+      first_part[s] = bm.num_nodes() - 1;  // parts 1, 2, … follow; part 0 is s itself
+      bm.degree.insert(bm.degree.end(), parts[v] - 1, pd);
+      r.side_of_bnode.insert(r.side_of_bnode.end(), parts[v] - 1, s);
+    }
   }
+  auto part = [&](int s, int j) { return j == 0 ? s : first_part[s] + j; };
   auto attach = [&](int s) {
     if (first_part[s] < 0) return s;
-    return first_part[s] + static_cast<int>(int64_t{next_end[s]++} * parts[s] / ends[s]);
+    return part(s, static_cast<int>(int64_t{next_end[s]++} * parts[s / 2] / ends[s]));
   };
 
   auto add = [&](int a, int b, int cap, double w, int arc) {
@@ -72,22 +71,17 @@ BMatchingReduction reduce_to_bmatching(const BiMcf& in, const Throughflow& tf) {
     const int cap = static_cast<int>(std::min<int64_t>(in.capacity[i], limit));
     if (cap > 0) add(a, b, cap, -in.cost[i], i);
   }
-  // Links before the centre edge: gadget_matching pairs weight-0 edges greedily in this order,
-  // which keeps the all-slack start perfect.
-  for (int v = 0; v < n; ++v) {
-    const int pd = part_degree(v);
-    if (pd == 0) continue;
-    for (int j = 0; j < parts[2 * v]; ++j) add(first_part[2 * v] + j, 2 * v, pd, 0.0, -1);
-    add(2 * v, 2 * v + 1, std::min(bm.degree[2 * v], bm.degree[2 * v + 1]), 0.0, -1);
-    for (int j = 0; j < parts[2 * v + 1]; ++j)
-      add(first_part[2 * v + 1] + j, 2 * v + 1, pd, 0.0, -1);
-  }
+  // What a head-side part leaves unused pairs with what a tail-side part does.
+  for (int v = 0; v < n; ++v)
+    for (int i = 0; i < parts[v]; ++i)
+      for (int j = 0; j < parts[v]; ++j)
+        add(part(2 * v, i), part(2 * v + 1, j), part_degree(v), 0.0, -1);
   return r;
 }
 
 int64_t matching_copies_bound(int limit, int part_degree) {
-  // Parts: ⌈K/P⌉·P < K + P per side, and the centre as many.
-  return part_degree == 0 ? 2 * int64_t{limit} : 4 * (int64_t{limit} + part_degree);
+  // Parts: ⌈K/P⌉·P < K + P per side.
+  return part_degree == 0 ? 2 * int64_t{limit} : 2 * (int64_t{limit} + part_degree);
 }
 
 Throughflow refinement_throughflow(const BiMcf& bimcf) {

@@ -6,8 +6,8 @@
 // flow plus the slack equals K, and so does the tail-side flow plus the slack — conservation —
 // and no node carries more than K. A ±2 loop becomes a b-edge from v_in (or v_out) to itself,
 // which uses two of its degree per unit. The all-slack matching (flow 0) is always perfect.
-// A hub can instead get tiers (Throughflow below): the same conservation through parts and
-// centres, with far fewer matching edges for a large K.
+// A hub can instead get tiers (Throughflow below): the same conservation through parts, with
+// far fewer matching edges for a large K.
 //
 // Refinement needs K ≥ 2 only: every improving circulation decomposes into circuits of
 // throughflow at most 2 (paper Thm 3.8), so K = 2 loses nothing; larger K lets one round move
@@ -38,10 +38,8 @@ struct BMatching {
 struct BMatchingReduction {
   BMatching bmatching;
   std::vector<int> arc_of_edge;  // b-edge → Bi-MCF arc, −1 for slack and tier edges
-  // Per b-node: the node side (v_in = 2v, v_out = 2v + 1) whose dual it takes, negated for a
-  // tier's centre (see reduce_to_bmatching).
+  // Per b-node: the node side (v_in = 2v, v_out = 2v + 1) it stands for, whose dual it takes.
   std::vector<int> side_of_bnode;
-  std::vector<char> negated_dual;
 
   // Bi-MCF arc flows from b-edge values.
   std::vector<int64_t> lift(std::span<const int> edge_value, int num_arcs) const;
@@ -51,12 +49,13 @@ struct BMatchingReduction {
 // part_degree 0 a node is one b-node per side (v_in = 2v, v_out = 2v + 1) of degree K, joined
 // by the slack edge. That costs K matching copies per side, each joined to every unit of every
 // arc there — too many at a hub. With part_degree P > 0 the node gets tiers: each side's arc
-// ends, in arc order, fall into m = max(1, min(⌈K/P⌉, E)) parts of degree P (the i-th of the E
-// ends into part ⌊i·m/E⌋; a loop's two ends stay together), every part is joined by a weight-0
-// link of capacity P to the side's centre (b-node 2v or 2v + 1, degree m·P), which takes what
-// its parts leave unused, and the two centres by a weight-0 edge that carries the throughflow.
-// So a side carries at most P units per part and m·P ≥ min(K, P·E) in all, at about
-// 3·(m·P)² + P·(units) matching edges instead of K·(units).
+// ends, in arc order, fall into m = max(1, min(⌈K/P⌉, E)) parts of degree P (E the larger
+// side's end count; the i-th of a side's E' ends into part ⌊i·m/E'⌋; a loop's two ends stay
+// together; part 0 is the side's own b-node, the others follow the 2n side b-nodes), and every
+// head-side part is joined to every tail-side part by a weight-0 edge of capacity P, which
+// pairs what one leaves unused with what the other does: the two sides' unused degrees are
+// equal, so their flows are — conservation — with at most P units per part and m·P in all, at
+// (m·P)² + P·(units) matching edges instead of K·(units).
 struct Throughflow {
   std::vector<int> limit;        // K per node, ≥ 1
   std::vector<int> part_degree;  // P per node, 0 for one b-node per side; may be empty (all 0)
@@ -66,7 +65,7 @@ struct Throughflow {
 // b-nodes an arc joins; half the degree for a loop) are clamped, so kInfinity is fine.
 BMatchingReduction reduce_to_bmatching(const BiMcf& bimcf, const Throughflow& throughflow);
 
-// Matching copies a node's b-nodes can have at most (both sides, parts and centres): what
+// Matching copies a node's b-nodes can have at most (both sides, all parts): what
 // residual_pruning.hpp's scale bound counts.
 int64_t matching_copies_bound(int limit, int part_degree);
 
@@ -79,9 +78,11 @@ int64_t matching_copies_bound(int limit, int part_degree);
 // side. Generated QuadWild-like 10^6 edges (border node of 3,715 arcs): flat K = 32 there took
 // 39 rounds, the tail all waiting on the border's throughflow (K = 4 at every other node gave
 // the same objective after every round), and flat K = 256 made a round 10× slower; tiers with
-// K = 256, and refinement's widening windows (refine.cpp), take 8 rounds and half the time.
+// K = 256, and refinement's widening windows (refine.cpp), take 8 rounds and under half the
+// time. K from arcs/32 rather than fewer: K² is the tiers' own cost, and at 10^5 edges
+// (border node of 401 arcs) K = 256 made the matchings slower than flat K = 32 had.
 inline constexpr int kHubArcs = 128;
-inline constexpr int kArcsPerThroughflowPair = 8;
+inline constexpr int kArcsPerThroughflowPair = 32;
 inline constexpr int kMaxThroughflow = 256;
 inline constexpr int kTierPartDegree = 8;
 Throughflow refinement_throughflow(const BiMcf& bimcf);

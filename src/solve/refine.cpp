@@ -120,8 +120,7 @@ std::vector<int64_t> round_matching_duals(const BMatchingReduction& red,
   std::vector<int64_t> bnode_dual(bm.num_nodes());
   for (int b = 0; b < bm.num_nodes(); ++b) {
     const int s = red.side_of_bnode[b];
-    const int64_t d = s % 2 == 0 ? node_dual[s / 2] : -node_dual[s / 2];
-    bnode_dual[b] = red.negated_dual[b] ? -d : d;
+    bnode_dual[b] = s % 2 == 0 ? node_dual[s / 2] : -node_dual[s / 2];
   }
   return gadget_duals(bm, mm, bnode_dual, bedge_weight);
 }

@@ -80,9 +80,9 @@ inline int64_t doubled_matching_weight(double w, double cost_scale) {
 std::vector<int64_t> doubled_matching_weights(std::span<const double> weights, double cost_scale);
 
 // The blossom solver's start duals for a round's matching: the LP's node dual d(v)
-// (`node_dual`) on v's b-nodes, +d(v) on its heads side and −d(v) on its tails side, negated
-// on a tier's centre (bmatching.hpp: side_of_bnode), spread over the gadgets by gadget_duals.
-// A tier's links and centre edge, weight 0, are then tight. No conversion is needed: the two
+// (`node_dual`) on v's b-nodes, +d(v) on its heads side and −d(v) on its tails side (a tier's
+// parts too, bmatching.hpp: side_of_bnode), spread over the gadgets by gadget_duals. A tier's
+// weight-0 edges between the sides are then tight. No conversion is needed: the two
 // arcs of a b-edge's relaxation double cover have reduced costs that add up to 2·c·S less the
 // b-node duals at its ends, so these are already in the doubled weights' unit (1/S).
 std::vector<int64_t> round_matching_duals(const BMatchingReduction& bmatching,

@@ -369,8 +369,8 @@ TEST(Reductions, BMatchingIsTheCheapestCirculationWithinEachNodesThroughflow) {
 }
 
 // The same with tiers (bmatching.hpp): a tiered node's limit is per part, the i-th of the E arc
-// ends at a side going to part ⌊i·parts/E⌋ (parts = min(⌈K/P⌉, E), at least 1; a loop is one
-// end that takes two units), each part carrying at most its degree P units.
+// ends at a side going to part ⌊i·parts/E⌋ (parts = min(⌈K/P⌉, the larger side's E), at least
+// 1; a loop is one end that takes two units), each part carrying at most its degree P units.
 TEST(Reductions, TieredBMatchingIsTheCheapestCirculationWithinEachPartsLimit) {
   std::mt19937_64 rng(37);
   constexpr int kTierAbove = 2, kPartDegree = 2;
@@ -389,7 +389,8 @@ TEST(Reductions, TieredBMatchingIsTheCheapestCirculationWithinEachPartsLimit) {
     }
     std::vector<int> parts(2 * n), seen(2 * n, 0), part_a(m), part_b(m);
     for (int s = 0; s < 2 * n; ++s)
-      parts[s] = std::max(1, std::min((k[s / 2] + kPartDegree - 1) / kPartDegree, ends[s]));
+      parts[s] = std::max(1, std::min((k[s / 2] + kPartDegree - 1) / kPartDegree,
+                                      std::max(ends[s & ~1], ends[s | 1])));
     for (int a = 0; a < m; ++a) {
       const int sa = side(c.end_a[a]), sb = side(c.end_b[a]);
       part_a[a] = seen[sa]++ * parts[sa] / ends[sa];
@@ -446,15 +447,15 @@ TEST(Reductions, HubsGetLargerThroughflowLimits) {
     }
   };
   arcs(0, 1, 127);  // node 0: 127 arcs, node 1: 127 + 10
-  arcs(1, 2, 10);   // node 2: 10 + 3000
-  arcs(2, 3, 3000);
+  arcs(1, 2, 10);   // node 2: 10 + 9000
+  arcs(2, 3, 9000);
   const detail::Throughflow tf = detail::refinement_throughflow(c);
   const int pd = detail::kTierPartDegree;
-  EXPECT_EQ(tf.limit, (std::vector<int>{2, 34, detail::kMaxThroughflow, detail::kMaxThroughflow}));
+  EXPECT_EQ(tf.limit, (std::vector<int>{2, 8, detail::kMaxThroughflow, detail::kMaxThroughflow}));
   EXPECT_EQ(tf.part_degree, (std::vector<int>{0, pd, pd, pd}));
   c.end_a.resize(137), c.end_b.resize(137), c.capacity.resize(137), c.cost.resize(137);
   const detail::Throughflow fewer = detail::refinement_throughflow(c);
-  EXPECT_EQ(fewer.limit, (std::vector<int>{2, 34, 2, 2}));
+  EXPECT_EQ(fewer.limit, (std::vector<int>{2, 8, 2, 2}));
   EXPECT_EQ(fewer.part_degree, (std::vector<int>{0, pd, 0, 0}));
 }
 
