@@ -84,7 +84,7 @@ int64_t matching_copies_bound(int limit, int part_degree) {
   return part_degree == 0 ? 2 * int64_t{limit} : 2 * (int64_t{limit} + part_degree);
 }
 
-Throughflow refinement_throughflow(const BiMcf& bimcf) {
+Throughflow refinement_throughflow(const BiMcf& bimcf, std::span<const int> min_throughflow) {
   std::vector<int> arcs(bimcf.num_nodes(), 0);
   for (int i = 0; i < bimcf.num_arcs(); ++i) {
     ++arcs[bimcf.end_a[i].node];
@@ -94,9 +94,13 @@ Throughflow refinement_throughflow(const BiMcf& bimcf) {
   tf.limit.assign(arcs.size(), 2);
   tf.part_degree.assign(arcs.size(), 0);
   for (size_t v = 0; v < arcs.size(); ++v) {
-    if (arcs[v] < kHubArcs) continue;
-    tf.limit[v] = std::min(2 * (arcs[v] / kArcsPerThroughflowPair), kMaxThroughflow);
-    tf.part_degree[v] = kTierPartDegree;
+    if (arcs[v] >= kHubArcs) {
+      tf.limit[v] = std::min(2 * (arcs[v] / kArcsPerThroughflowPair), kMaxThroughflow);
+      tf.part_degree[v] = kTierPartDegree;
+    }
+    if (min_throughflow.empty()) continue;
+    tf.limit[v] = std::max(tf.limit[v], min_throughflow[v]);
+    if (tf.part_degree[v] > 0) tf.part_degree[v] = std::max(tf.part_degree[v], min_throughflow[v]);
   }
   return tf;
 }

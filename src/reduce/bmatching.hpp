@@ -85,6 +85,8 @@ inline constexpr int kHubArcs = 128;
 inline constexpr int kArcsPerThroughflowPair = 32;
 inline constexpr int kMaxThroughflow = 256;
 inline constexpr int kTierPartDegree = 8;
-Throughflow refinement_throughflow(const BiMcf& bimcf);
+// `min_throughflow`, when not empty, raises each node's K to at least its entry, and a tiered
+// node's part degree too (refinement's widened windows need that much through one part).
+Throughflow refinement_throughflow(const BiMcf& bimcf, std::span<const int> min_throughflow = {});
 
 }  // namespace bimdf::detail

@@ -219,18 +219,15 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     t = std::chrono::steady_clock::now();
     Throughflow throughflow;
     if (options.hub_throughflow) {
-      throughflow = refinement_throughflow(pruned.reduced);
+      // What the nodes' widened edges need (the windows are on only with hub_throughflow).
+      std::vector<int> need(pruned.reduced.num_nodes());
+      for (int v = 0; v < pruned.reduced.num_nodes(); ++v)
+        need[v] = windows.throughflow[pruned.residual_node[v]];
+      throughflow = refinement_throughflow(pruned.reduced, need);
     } else {
       throughflow.limit.assign(pruned.reduced.num_nodes(), 2);
     }
-    for (int v = 0; v < pruned.reduced.num_nodes(); ++v) {
-      // What the node's widened edges need, in its limit and in each of its parts.
-      const int need = windows.throughflow[pruned.residual_node[v]];
-      throughflow.limit[v] = std::max(throughflow.limit[v], need);
-      if (!throughflow.part_degree.empty() && throughflow.part_degree[v] > 0)
-        throughflow.part_degree[v] = std::max(throughflow.part_degree[v], need);
-      r.max_throughflow = std::max(r.max_throughflow, throughflow.limit[v]);
-    }
+    for (int k : throughflow.limit) r.max_throughflow = std::max(r.max_throughflow, k);
     const BMatchingReduction bm = reduce_to_bmatching(pruned.reduced, throughflow);
     const MatchingReduction mm = reduce_to_perfect_matching(bm.bmatching);
     r.matching_nodes = std::max<int64_t>(r.matching_nodes, mm.graph.num_nodes);

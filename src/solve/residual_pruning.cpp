@@ -18,12 +18,9 @@ int lp_scale_log2(const BiMcf& residual, std::span<const int> min_throughflow) {
   const double lp_nodes = 2.0 * residual.num_nodes() + 1;
   // Pruning only removes arcs, so the reduced residual's throughflow limits are at most these.
   double copies = 0;
-  const Throughflow tf = refinement_throughflow(residual);
-  for (int v = 0; v < residual.num_nodes(); ++v) {
-    const int need = min_throughflow.empty() ? 2 : min_throughflow[v];
-    const int pd = tf.part_degree[v] == 0 ? 0 : std::max(tf.part_degree[v], need);
-    copies += static_cast<double>(matching_copies_bound(std::max(tf.limit[v], need), pd));
-  }
+  const Throughflow tf = refinement_throughflow(residual, min_throughflow);
+  for (int v = 0; v < residual.num_nodes(); ++v)
+    copies += static_cast<double>(matching_copies_bound(tf.limit[v], tf.part_degree[v]));
   const double matching_nodes = copies + 2 * capacity + 1;
   const int needed =
       static_cast<int>(std::ceil(std::log2(std::max(1.0, matching_nodes / lp_nodes))));
