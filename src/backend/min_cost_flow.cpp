@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -45,8 +46,15 @@ namespace {
 constexpr int64_t kWarmStartNodesPerUnit = 10;
 constexpr int64_t kWorkLimitPerArc = 20;
 
-// LEMON's network simplex from scratch on the scaled integer costs: decides unboundedness.
-MinCostFlowResult network_simplex(const DirectedMcf& mcf, double scale) {
+// LEMON's network simplex on integer costs `cost` and the supplies `supply` (in place of
+// mcf.cost and mcf.supply): status, and when optimal the flow and potentials per node.
+struct SimplexOutcome {
+  MinCostFlowStatus status = MinCostFlowStatus::Infeasible;
+  std::vector<int64_t> flow, potential;
+};
+
+SimplexOutcome lemon_network_simplex(const DirectedMcf& mcf, const std::vector<int64_t>& cost,
+                                     const std::vector<int64_t>& supply) {
   const int n = mcf.num_nodes(), m = mcf.num_arcs();
   // StaticDigraph wants arcs sorted by source; remember the permutation.
   std::vector<std::pair<int, int>> arcs(m);
@@ -58,42 +66,130 @@ MinCostFlowResult network_simplex(const DirectedMcf& mcf, double scale) {
   lemon::StaticDigraph g;
   g.build(n, arcs.begin(), arcs.end());
 
-  MinCostFlowResult result;
-  result.cost_scale = scale;
-  lemon::StaticDigraph::ArcMap<int64_t> upper(g), cost(g);
-  lemon::StaticDigraph::NodeMap<int64_t> supply(g);
+  lemon::StaticDigraph::ArcMap<int64_t> upper(g), arc_cost(g);
+  lemon::StaticDigraph::NodeMap<int64_t> node_supply(g);
   for (int i = 0; i < m; ++i) {
     const lemon::StaticDigraph::Arc a = g.arc(i);
     upper[a] = mcf.capacity[order[i]];  // kInfinity is LEMON's INF for int64_t
-    cost[a] = std::llround(mcf.cost[order[i]] * result.cost_scale);
+    arc_cost[a] = cost[order[i]];
   }
-  for (int v = 0; v < n; ++v) supply[g.node(v)] = mcf.supply[v];
+  for (int v = 0; v < n; ++v) node_supply[g.node(v)] = supply[v];
 
   lemon::NetworkSimplex<lemon::StaticDigraph, int64_t, int64_t> simplex(g);
-  simplex.upperMap(upper).costMap(cost).supplyMap(supply);
+  simplex.upperMap(upper).costMap(arc_cost).supplyMap(node_supply);
+  SimplexOutcome out;
   switch (simplex.run()) {
     case decltype(simplex)::INFEASIBLE:
-      result.status = MinCostFlowStatus::Infeasible;
-      return result;
+      out.status = MinCostFlowStatus::Infeasible;
+      return out;
     case decltype(simplex)::UNBOUNDED:
-      result.status = MinCostFlowStatus::Unbounded;
-      return result;
+      out.status = MinCostFlowStatus::Unbounded;
+      return out;
     case decltype(simplex)::OPTIMAL:
       break;
   }
+  out.status = MinCostFlowStatus::Optimal;
+  out.flow.assign(m, 0);
+  for (int i = 0; i < m; ++i) out.flow[order[i]] = simplex.flow(g.arc(i));
+  out.potential.resize(n);
+  for (int v = 0; v < n; ++v) out.potential[v] = simplex.potential(g.node(v));
+  return out;
+}
+
+// The result for integer costs `cost` from a flow and potentials optimal for them.
+MinCostFlowResult optimal_result(const DirectedMcf& mcf, double scale, std::vector<int64_t> cost,
+                                 std::vector<int64_t> flow, std::vector<int64_t> potential) {
+  MinCostFlowResult result;
   result.status = MinCostFlowStatus::Optimal;
-  result.flow.assign(m, 0);
-  result.scaled_cost.assign(m, 0);
-  result.reduced_cost.assign(m, 0);
-  for (int i = 0; i < m; ++i) {
-    const lemon::StaticDigraph::Arc a = g.arc(i);
-    result.flow[order[i]] = simplex.flow(a);
-    result.scaled_cost[order[i]] = cost[a];
-    result.reduced_cost[order[i]] =
-        cost[a] + simplex.potential(g.source(a)) - simplex.potential(g.target(a));
+  result.cost_scale = scale;
+  result.flow = std::move(flow);
+  result.potential = std::move(potential);
+  result.scaled_cost = std::move(cost);
+  result.reduced_cost.resize(mcf.num_arcs());
+  for (int a = 0; a < mcf.num_arcs(); ++a)
+    result.reduced_cost[a] =
+        result.scaled_cost[a] + result.potential[mcf.source[a]] - result.potential[mcf.target[a]];
+  return result;
+}
+
+// Bounds, conservation and complementary slackness of an Optimal result: LP duality's proof.
+bool certifies_optimality(const DirectedMcf& mcf, const MinCostFlowResult& r) {
+  std::vector<int64_t> net(mcf.num_nodes(), 0);
+  for (int a = 0; a < mcf.num_arcs(); ++a) {
+    const int64_t f = r.flow[a], rc = r.reduced_cost[a];
+    if (f < 0 || f > mcf.capacity[a] || (f < mcf.capacity[a] && rc < 0) || (f > 0 && rc > 0))
+      return false;
+    net[mcf.source[a]] += f;
+    net[mcf.target[a]] -= f;
   }
-  result.potential.resize(n);
-  for (int v = 0; v < n; ++v) result.potential[v] = simplex.potential(g.node(v));
+  return net == mcf.supply;
+}
+
+// LEMON's network simplex from scratch on the scaled integer costs: decides unboundedness.
+MinCostFlowResult network_simplex(const DirectedMcf& mcf, double scale) {
+  std::vector<int64_t> cost(mcf.num_arcs());
+  for (int a = 0; a < mcf.num_arcs(); ++a) cost[a] = std::llround(mcf.cost[a] * scale);
+  SimplexOutcome s = lemon_network_simplex(mcf, cost, mcf.supply);
+  if (s.status != MinCostFlowStatus::Optimal) {
+    MinCostFlowResult result;
+    result.status = s.status;
+    result.cost_scale = scale;
+    return result;
+  }
+  return optimal_result(mcf, scale, std::move(cost), std::move(s.flow), std::move(s.potential));
+}
+
+// LEMON's network simplex given potentials `start` as far as it can take them: it always
+// begins from its own artificial basis, so it is run on the costs reduced by `start`, with
+// every finite arc they price negative turned around (its flow x becomes capacity − x on the
+// reversed arc, the capacity moving from the supply of its source to that of its target).
+// What is left to do is routing the imbalance the start leaves, which on the refinement LPs
+// of the generated 10^5- and 10^6-edge instances halves the simplex's time against a cold
+// start; on the shared instances it is even (docs/benchmarks.md). Falls back to the cold
+// simplex when the reduced costs would leave LEMON's overflow bound (integer_cost_scale with
+// 2^60), when the potentials found spread wider than a cold solve's can (2^limit_log2, which
+// the caller's use of them assumes), whenever the reduced problem is not optimal, so that
+// infeasibility and unboundedness are decided on the original problem, and if the result
+// fails its optimality check.
+MinCostFlowResult network_simplex_from(const DirectedMcf& mcf, double scale, int limit_log2,
+                                       const std::vector<int64_t>& cost,
+                                       const std::vector<int64_t>& start) {
+  const int n = mcf.num_nodes(), m = mcf.num_arcs();
+  // LEMON's own arithmetic needs the bound of integer_cost_scale with 2^60; the caller's
+  // consumers of the potentials (refinement's matching) need them no wider than 2^limit_log2.
+  const double cost_bound = 0x1p60, spread_bound = std::ldexp(1.0, limit_log2);
+  DirectedMcf reduced = mcf;
+  std::vector<int64_t> reduced_cost(m);
+  std::vector<char> turned(m, 0);
+  for (int a = 0; a < m; ++a) {
+    const int u = mcf.source[a], v = mcf.target[a];
+    // start in [−2^62, 0] (centred on its largest) and |cost| ≤ 2^60: no overflow.
+    int64_t r = cost[a] + start[u] - start[v];
+    if (r < 0 && mcf.capacity[a] != std::numeric_limits<int64_t>::max()) {
+      turned[a] = 1;
+      std::swap(reduced.source[a], reduced.target[a]);
+      reduced.supply[u] -= mcf.capacity[a];
+      reduced.supply[v] += mcf.capacity[a];
+      r = -r;
+    }
+    if (static_cast<double>(std::abs(r)) * (n + 1) > cost_bound) return network_simplex(mcf, scale);
+    reduced_cost[a] = r;
+  }
+  SimplexOutcome s = lemon_network_simplex(reduced, reduced_cost, reduced.supply);
+  if (s.status != MinCostFlowStatus::Optimal) return network_simplex(mcf, scale);
+  std::vector<int64_t> potential(n);
+  for (int v = 0; v < n; ++v) potential[v] = s.potential[v] + start[v];
+  const auto [low_at, high_at] = std::minmax_element(potential.begin(), potential.end());
+  const int64_t low = *low_at, high = *high_at;
+  if (static_cast<double>(high) - static_cast<double>(low) > spread_bound)
+    return network_simplex(mcf, scale);
+  for (int64_t& p : potential) p -= high;
+  for (int a = 0; a < m; ++a)
+    if (turned[a]) s.flow[a] = mcf.capacity[a] - s.flow[a];
+  MinCostFlowResult result =
+      optimal_result(mcf, scale, cost, std::move(s.flow), std::move(potential));
+  // The translation back is ours, not LEMON's: checked like the shortest paths' result.
+  if (!certifies_optimality(mcf, result)) return network_simplex(mcf, scale);
   return result;
 }
 
@@ -111,17 +207,18 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2,
   if (static_cast<int>(start_potential.size()) != n) return network_simplex(mcf, scale);
   // Started, but the network simplex answers: the start was too far off, or the solver could
   // not decide (see shortest_path_flow.hpp).
+  std::vector<int64_t> cost(m);
+  std::vector<int64_t> start(n);
   auto abandoned = [&] {
-    MinCostFlowResult fallback = network_simplex(mcf, scale);
+    MinCostFlowResult fallback =
+        network_simplex_from(mcf, scale, std::min(limit_log2, 60), cost, start);
     fallback.method = MinCostFlowMethod::WarmStartAbandoned;
     return fallback;
   };
-  std::vector<int64_t> cost(m);
   for (int a = 0; a < m; ++a) cost[a] = std::llround(mcf.cost[a] * scale);
   // Potentials matter only up to a common shift: centred on their largest, so that a chain of
   // solves, whose potentials only ever decrease, never drifts out of the solver's bounds.
   const double top = *std::max_element(start_potential.begin(), start_potential.end());
-  std::vector<int64_t> start(n);
   for (int v = 0; v < n; ++v) {
     const double p = (start_potential[v] - top) * scale;
     start[v] = std::llround(std::clamp(p, -0x1p62, 0x1p62));  // beyond ±2^60: refused
@@ -141,16 +238,8 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2,
     default:
       return abandoned();
   }
-  result.status = MinCostFlowStatus::Optimal;
+  result = optimal_result(mcf, scale, std::move(cost), solver.flow(), solver.potential());
   result.method = MinCostFlowMethod::WarmStart;
-  result.cost_scale = scale;
-  result.flow = solver.flow();
-  result.potential = solver.potential();
-  result.scaled_cost = std::move(cost);
-  result.reduced_cost.resize(m);
-  for (int a = 0; a < m; ++a)
-    result.reduced_cost[a] =
-        result.scaled_cost[a] + result.potential[mcf.source[a]] - result.potential[mcf.target[a]];
   return result;
 }
 

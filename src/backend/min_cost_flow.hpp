@@ -1,8 +1,9 @@
 // Minimum-cost flow on a directed network (graph/directed_mcf.hpp): from scratch by LEMON's
 // network simplex, or, given the potentials of a similar problem solved before, by our
 // shortest-path solver started from them (backend/shortest_path_flow.hpp), which gives way to
-// the network simplex when the start is too far off. This header is LEMON-free so that C++20
-// code can include it (DESIGN §6).
+// the network simplex when the start is too far off — run then on the costs reduced by the
+// start, every arc they price negative saturated, so that it only routes the imbalance the
+// start leaves. This header is LEMON-free so that C++20 code can include it (DESIGN §6).
 //
 // Integer cost scaling — the one place where bimdf turns double costs into the integers a
 // combinatorial solver needs (DESIGN §2): every per-unit cost c becomes llround(c·S) with
@@ -24,8 +25,8 @@ namespace bimdf::detail {
 enum class MinCostFlowStatus { Optimal, Infeasible, Unbounded };
 
 // How a min-cost flow was solved (statistics): from scratch by the network simplex (no start
-// given), from the given potentials by shortest paths, or by the network simplex although a
-// start was given (too far off, past the work limit, or undecided by the shortest paths).
+// given), from the given potentials by shortest paths, or by the network simplex from them
+// (too far off for the shortest paths, past their work limit, or undecided by them).
 enum class MinCostFlowMethod { NetworkSimplex, WarmStart, WarmStartAbandoned };
 
 // Counts of MinCostFlowMethod over a solve's min-cost flows.

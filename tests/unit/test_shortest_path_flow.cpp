@@ -210,6 +210,52 @@ TEST(ShortestPathFlow, WarmStartedMinCostFlowAgreesWithNetworkSimplex) {
   // paths: ExactShared; a start they take below).
   EXPECT_EQ(methods.cold, 0);
   EXPECT_EQ(methods.warm, 100 - skipped);
+  EXPECT_GT(methods.warm_abandoned, 0);
+}
+
+TEST(ShortestPathFlow, NetworkSimplexFromAStartAgreesWithAColdOne) {
+  // A start too far off for the shortest paths goes to the network simplex on the costs the
+  // start reduces, the arcs it prices negative turned around. The status is the cold simplex's
+  // — infeasible and unbounded networks included — and so is the optimum, whose flow and
+  // potentials are checked against the original costs.
+  std::mt19937 rng(21);
+  bimdf::detail::MinCostFlowTally methods;
+  int infeasible = 0, unbounded = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = 20 + trial;
+    Network g = random_network(rng, n, 4 * n, 5, 200, 0.1);
+    if (trial % 10 == 0) {  // 0 → 1 → 0, infinite, total cost −1
+      g.source.insert(g.source.end(), {0, 1});
+      g.target.insert(g.target.end(), {1, 0});
+      g.capacity.insert(g.capacity.end(), {kInf, kInf});
+      g.cost.insert(g.cost.end(), {-3, 2});
+    }
+    if (trial % 7 == 3) g.supply.insert(g.supply.end(), {1, -1});  // two nodes, no arc between
+    // An empty arc of cost 2000 sets the integer scale (min_cost_flow.hpp), so that costs
+    // reduced by the start below stay within its bound and the simplex takes the start.
+    g.source.push_back(0);
+    g.target.push_back(1);
+    g.capacity.push_back(0);
+    g.cost.push_back(2000);
+    DirectedMcf mcf{g.supply, g.source, g.target, g.capacity, {}};
+    for (int64_t c : g.cost) mcf.cost.push_back(static_cast<double>(c));
+    const auto cold = bimdf::detail::solve_min_cost_flow(mcf);
+    std::vector<double> start(g.supply.size());
+    for (double& p : start) p = std::uniform_real_distribution<double>(-300, 300)(rng);
+    const auto warm = bimdf::detail::solve_min_cost_flow(mcf, 60, start);
+    methods.add(warm.method);
+    ASSERT_EQ(warm.status, cold.status) << "trial " << trial;
+    infeasible += cold.status == MinCostFlowStatus::Infeasible;
+    unbounded += cold.status == MinCostFlowStatus::Unbounded;
+    if (cold.status != MinCostFlowStatus::Optimal) continue;
+    Network scaled = g;
+    scaled.cost = warm.scaled_cost;
+    EXPECT_EQ(cost_of(scaled, warm.flow), cost_of(scaled, cold.flow)) << "trial " << trial;
+    expect_optimal(scaled, warm.flow, warm.potential);
+  }
+  EXPECT_EQ(methods.warm_abandoned, 200);
+  EXPECT_GT(infeasible, 25);
+  EXPECT_GT(unbounded, 10);
 }
 
 TEST(ShortestPathFlow, AGoodStartIsFinishedByShortestPaths) {
