@@ -143,9 +143,8 @@ MinCostFlowResult network_simplex(const DirectedMcf& mcf, double scale) {
 // begins from its own artificial basis, so it is run on the costs reduced by `start`, with
 // every finite arc they price negative turned around (its flow x becomes capacity − x on the
 // reversed arc, the capacity moving from the supply of its source to that of its target).
-// What is left to do is routing the imbalance the start leaves, which on the refinement LPs
-// of the generated 10^5- and 10^6-edge instances halves the simplex's time against a cold
-// start; on the shared instances it is even (docs/benchmarks.md). Falls back to the cold
+// What is left to do is routing the imbalance the start leaves, which pays on large networks
+// only (kStartedSimplexMinNodes in min_cost_flow.hpp has the figures). Falls back to the cold
 // simplex when the reduced costs would leave LEMON's overflow bound (integer_cost_scale with
 // 2^60), when the potentials found spread wider than a cold solve's can (2^limit_log2, which
 // the caller's use of them assumes), whenever the reduced problem is not optimal, so that
@@ -196,7 +195,8 @@ MinCostFlowResult network_simplex_from(const DirectedMcf& mcf, double scale, int
 }  // namespace
 
 MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2,
-                                      const std::vector<double>& start_potential) {
+                                      const std::vector<double>& start_potential,
+                                      int started_simplex_min_nodes) {
   const int n = mcf.num_nodes(), m = mcf.num_arcs();
   MinCostFlowResult result;
   if (n == 0) {  // LEMON reports an empty network as infeasible
@@ -211,7 +211,9 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2,
   std::vector<int64_t> start(n);
   auto abandoned = [&] {
     MinCostFlowResult fallback =
-        network_simplex_from(mcf, scale, std::min(limit_log2, 60), cost, start);
+        n >= started_simplex_min_nodes
+            ? network_simplex_from(mcf, scale, std::min(limit_log2, 60), cost, start)
+            : network_simplex(mcf, scale);
     fallback.method = MinCostFlowMethod::WarmStartAbandoned;
     return fallback;
   };

@@ -59,11 +59,24 @@ struct MinCostFlowResult {
   std::vector<int64_t> potential;  // π per node, when Optimal
 };
 
+// A start the shortest paths cannot take still starts the network simplex on networks of at
+// least this many nodes, below which it is started cold. Measured on the same LPs in one
+// process (refinement's first LP, started from the cover's potentials): on the shared
+// instances, up to 25k nodes, the simplex from the start took 0.85–1.6× the cold one's time
+// (bull__flow_0 62 against 73 ms, bull__flow_1 81 against 59 ms, ChineseDragon 29 against
+// 24 ms); on generated instances it gains more the larger they are (18k nodes 105 against
+// 120 ms, 44k nodes 337 against 553 ms, 440k nodes 36 against 69–78 s; docs/benchmarks.md).
+inline constexpr int kStartedSimplexMinNodes = 32768;
+
 // Solves `mcf` exactly (for the scaled integer costs). Deterministic. `limit_log2` < 60 gives
 // coarser integer costs (the bound above with 2^limit_log2), for callers that hand the costs
 // and potentials on to a solver with less headroom (refinement's perfect matching).
+// `start_potential` (per node, in units of cost; empty: none) warm-starts it as described
+// above; `started_simplex_min_nodes` is the size from which a start the shortest paths give up
+// still starts the network simplex (tests lower it).
 MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2 = 60,
-                                      const std::vector<double>& start_potential = {});
+                                      const std::vector<double>& start_potential = {},
+                                      int started_simplex_min_nodes = kStartedSimplexMinNodes);
 
 // The optimal potentials of `r` in units of cost (π / S): what a later, similar problem may
 // start from.
