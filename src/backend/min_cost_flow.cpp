@@ -46,23 +46,31 @@ namespace {
 constexpr int64_t kWarmStartNodesPerUnit = 10;
 constexpr int64_t kWorkLimitPerArc = 20;
 
-// LEMON's network simplex on integer costs `cost` and the supplies `supply` (in place of
-// mcf.cost and mcf.supply): status, and when optimal the flow and potentials per node.
+// The integer costs llround(c·S) the solvers see (min_cost_flow.hpp).
+std::vector<int64_t> scaled_costs(const DirectedMcf& mcf, double scale) {
+  std::vector<int64_t> cost(mcf.num_arcs());
+  for (int a = 0; a < mcf.num_arcs(); ++a) cost[a] = std::llround(mcf.cost[a] * scale);
+  return cost;
+}
+
+// LEMON's network simplex on the arcs source → target of `mcf`'s capacities, with integer
+// costs `cost` and the supplies `supply`: status, and when optimal the flow and potentials.
 struct SimplexOutcome {
   MinCostFlowStatus status = MinCostFlowStatus::Infeasible;
   std::vector<int64_t> flow, potential;
 };
 
-SimplexOutcome lemon_network_simplex(const DirectedMcf& mcf, const std::vector<int64_t>& cost,
+SimplexOutcome lemon_network_simplex(const DirectedMcf& mcf, const std::vector<int>& source,
+                                     const std::vector<int>& target,
+                                     const std::vector<int64_t>& cost,
                                      const std::vector<int64_t>& supply) {
   const int n = mcf.num_nodes(), m = mcf.num_arcs();
   // StaticDigraph wants arcs sorted by source; remember the permutation.
   std::vector<std::pair<int, int>> arcs(m);
   std::vector<int> order(m);
   for (int i = 0; i < m; ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int x, int y) { return mcf.source[x] < mcf.source[y]; });
-  for (int i = 0; i < m; ++i) arcs[i] = {mcf.source[order[i]], mcf.target[order[i]]};
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return source[x] < source[y]; });
+  for (int i = 0; i < m; ++i) arcs[i] = {source[order[i]], target[order[i]]};
   lemon::StaticDigraph g;
   g.build(n, arcs.begin(), arcs.end());
 
@@ -125,11 +133,10 @@ bool certifies_optimality(const DirectedMcf& mcf, const MinCostFlowResult& r) {
   return net == mcf.supply;
 }
 
-// LEMON's network simplex from scratch on the scaled integer costs: decides unboundedness.
-MinCostFlowResult network_simplex(const DirectedMcf& mcf, double scale) {
-  std::vector<int64_t> cost(mcf.num_arcs());
-  for (int a = 0; a < mcf.num_arcs(); ++a) cost[a] = std::llround(mcf.cost[a] * scale);
-  SimplexOutcome s = lemon_network_simplex(mcf, cost, mcf.supply);
+// LEMON's network simplex from scratch on the scaled integer costs `cost` (scaled_costs):
+// decides unboundedness.
+MinCostFlowResult network_simplex(const DirectedMcf& mcf, double scale, std::vector<int64_t> cost) {
+  SimplexOutcome s = lemon_network_simplex(mcf, mcf.source, mcf.target, cost, mcf.supply);
   if (s.status != MinCostFlowStatus::Optimal) {
     MinCostFlowResult result;
     result.status = s.status;
@@ -157,8 +164,9 @@ MinCostFlowResult network_simplex_from(const DirectedMcf& mcf, double scale, int
   // LEMON's own arithmetic needs the bound of integer_cost_scale with 2^60; the caller's
   // consumers of the potentials (refinement's matching) need them no wider than 2^limit_log2.
   const double cost_bound = 0x1p60, spread_bound = std::ldexp(1.0, limit_log2);
-  DirectedMcf reduced = mcf;
-  std::vector<int64_t> reduced_cost(m);
+  auto cold = [&] { return network_simplex(mcf, scale, cost); };
+  std::vector<int> source = mcf.source, target = mcf.target;
+  std::vector<int64_t> supply = mcf.supply, reduced_cost(m);
   std::vector<char> turned(m, 0);
   for (int a = 0; a < m; ++a) {
     const int u = mcf.source[a], v = mcf.target[a];
@@ -166,29 +174,28 @@ MinCostFlowResult network_simplex_from(const DirectedMcf& mcf, double scale, int
     int64_t r = cost[a] + start[u] - start[v];
     if (r < 0 && mcf.capacity[a] != std::numeric_limits<int64_t>::max()) {
       turned[a] = 1;
-      std::swap(reduced.source[a], reduced.target[a]);
-      reduced.supply[u] -= mcf.capacity[a];
-      reduced.supply[v] += mcf.capacity[a];
+      std::swap(source[a], target[a]);
+      supply[u] -= mcf.capacity[a];
+      supply[v] += mcf.capacity[a];
       r = -r;
     }
-    if (static_cast<double>(std::abs(r)) * (n + 1) > cost_bound) return network_simplex(mcf, scale);
+    if (static_cast<double>(std::abs(r)) * (n + 1) > cost_bound) return cold();
     reduced_cost[a] = r;
   }
-  SimplexOutcome s = lemon_network_simplex(reduced, reduced_cost, reduced.supply);
-  if (s.status != MinCostFlowStatus::Optimal) return network_simplex(mcf, scale);
+  SimplexOutcome s = lemon_network_simplex(mcf, source, target, reduced_cost, supply);
+  if (s.status != MinCostFlowStatus::Optimal) return cold();
   std::vector<int64_t> potential(n);
   for (int v = 0; v < n; ++v) potential[v] = s.potential[v] + start[v];
   const auto [low_at, high_at] = std::minmax_element(potential.begin(), potential.end());
   const int64_t low = *low_at, high = *high_at;
-  if (static_cast<double>(high) - static_cast<double>(low) > spread_bound)
-    return network_simplex(mcf, scale);
+  if (static_cast<double>(high) - static_cast<double>(low) > spread_bound) return cold();
   for (int64_t& p : potential) p -= high;
   for (int a = 0; a < m; ++a)
     if (turned[a]) s.flow[a] = mcf.capacity[a] - s.flow[a];
   MinCostFlowResult result =
       optimal_result(mcf, scale, cost, std::move(s.flow), std::move(potential));
   // The translation back is ours, not LEMON's: checked like the shortest paths' result.
-  if (!certifies_optimality(mcf, result)) return network_simplex(mcf, scale);
+  if (!certifies_optimality(mcf, result)) return cold();
   return result;
 }
 
@@ -204,20 +211,20 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2,
     return result;
   }
   const double scale = integer_cost_scale(mcf.cost, n, std::min(limit_log2, 60));
-  if (static_cast<int>(start_potential.size()) != n) return network_simplex(mcf, scale);
+  std::vector<int64_t> cost = scaled_costs(mcf, scale);
+  if (static_cast<int>(start_potential.size()) != n)
+    return network_simplex(mcf, scale, std::move(cost));
   // Started, but the network simplex answers: the start was too far off, or the solver could
   // not decide (see shortest_path_flow.hpp).
-  std::vector<int64_t> cost(m);
   std::vector<int64_t> start(n);
   auto abandoned = [&] {
     MinCostFlowResult fallback =
         n >= started_simplex_min_nodes
             ? network_simplex_from(mcf, scale, std::min(limit_log2, 60), cost, start)
-            : network_simplex(mcf, scale);
+            : network_simplex(mcf, scale, cost);
     fallback.method = MinCostFlowMethod::WarmStartAbandoned;
     return fallback;
   };
-  for (int a = 0; a < m; ++a) cost[a] = std::llround(mcf.cost[a] * scale);
   // Potentials matter only up to a common shift: centred on their largest, so that a chain of
   // solves, whose potentials only ever decrease, never drifts out of the solver's bounds.
   const double top = *std::max_element(start_potential.begin(), start_potential.end());
