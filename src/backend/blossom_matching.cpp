@@ -60,15 +60,11 @@ void BlossomMatching::bring_up_to_date(int b) {
   top_[b].label_time = now_;
 }
 
-// The top blossom of v, found by walking up the blossom forest. Each id remembers a jump to
+// The top blossom of v, found by walking up the blossom forest (top_of, in the header, takes
+// the common case: v's remembered jump still leads to a living top). Each id remembers a jump to
 // an ancestor found earlier (path compression); a jump is trusted only while its target lives
 // (same generation: only top blossoms are expanded, so a living target still contains it).
-int BlossomMatching::top_of(int v) {
-  const Link& lv = link_[v];
-  if (lv.parent < 0) return v;
-  // The common case: v's remembered jump still leads to a living top.
-  if (lv.jump >= 0 && lv.jump_gen == link_[lv.jump].gen && link_[lv.jump].parent < 0)
-    return lv.jump;
+int BlossomMatching::top_of_slow(int v) {
   int x = v;
   path_.clear();
   while (true) {
@@ -118,11 +114,12 @@ void BlossomMatching::scan_plus(int b) {
   for (int u : scratch_) {
     const int64_t yu = dual_in(u, self);
     for (int k = adj_start_[u]; k < adj_start_[u + 1]; ++k) {
-      const int e = adj_edge_[k], v = other(e, u);
-      if (!enabled_[e]) continue;
+      const Incidence& in = adj_[k];
+      if (in.w2 == kDisabled) continue;
+      const int e = in.edge, v = in.other;
       const int bv = top_of(v);
       if (bv == self || top_[bv].label == kMinus) continue;
-      const int64_t s = yu + dual_in(v, bv) - w2_[e];
+      const int64_t s = yu + dual_in(v, bv) - in.w2;
       if (top_[bv].label == kNone) {
         consider_grow(bv, e, now_ + s);
         continue;
@@ -143,12 +140,12 @@ void BlossomMatching::push_edge_events_towards(int b) {
   for (int v : scratch_) {
     const int64_t yv = dual_in(v, b);
     for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k) {
-      const int e = adj_edge_[k];
-      if (!enabled_[e]) continue;
-      const int u = other(e, v), bu = top_of(u);
+      const Incidence& in = adj_[k];
+      if (in.w2 == kDisabled) continue;
+      const int u = in.other, bu = top_of(u);
       if (top_[bu].label != kPlus) continue;
-      const int64_t time = now_ + yv + dual_in(u, bu) - w2_[e];
-      if (time < earliest) earliest = time, best = e;
+      const int64_t time = now_ + yv + dual_in(u, bu) - in.w2;
+      if (time < earliest) earliest = time, best = in.edge;
     }
   }
   if (best >= 0) consider_grow(b, best, earliest);

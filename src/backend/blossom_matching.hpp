@@ -110,7 +110,16 @@ class BlossomMatching {
   int64_t slack(int e);
   void leaves(int b, std::vector<int>& out);
   void bring_up_to_date(int b);
-  int top_of(int v);
+  // The top blossom of v (blossom_matching.cpp: top_of_slow walks up when the remembered jump
+  // is stale). The fast path is inline: it runs once or twice per edge the forest scans.
+  int top_of(int v) {
+    const Link& lv = link_[v];
+    if (lv.parent < 0) return v;
+    if (lv.jump >= 0 && lv.jump_gen == link_[lv.jump].gen && link_[lv.jump].parent < 0)
+      return lv.jump;
+    return top_of_slow(v);
+  }
+  int top_of_slow(int v);
   void set_label(int b, Label label, int edge, int from, int to, int tree);
   void scan_plus(int b);
   void push_edge_events_towards(int b);
@@ -140,7 +149,18 @@ class BlossomMatching {
   bool kept_ = false;          // the last run was Optimal: the next one resumes from it
   std::vector<int> reopened_;  // asked for since (reopen)
   std::vector<int> updated_;   // edges updated since (update_edge)
-  std::vector<int> adj_start_, adj_edge_;
+  // Incidence lists: per vertex, from adj_start_[v], an entry per edge with what the hot loops
+  // (scan_plus, push_edge_events_towards) read of it, so that they stream through memory
+  // instead of looking each edge up; w2 is kDisabled for a disabled edge. adj_pos_[2e] and
+  // [2e + 1] are edge e's entries at end_a and end_b (update_edge keeps them in step).
+  struct Incidence {
+    int other;  // the edge's other end
+    int edge;
+    int64_t w2;
+  };
+  static constexpr int64_t kDisabled = std::numeric_limits<int64_t>::min();
+  std::vector<int> adj_start_, adj_pos_;
+  std::vector<Incidence> adj_;
   // Doubled dual of vertex v: y_[v] + top_[t].off for its top blossom t + the change since t
   // was labeled.
   std::vector<int64_t> y_;

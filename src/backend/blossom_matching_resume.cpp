@@ -90,6 +90,7 @@ BlossomMatching& BlossomMatching::update_edge(int e, int64_t weight, bool enable
     throw std::invalid_argument("blossom matching: |weight| * (nodes + 1) must stay below 2^58");
   w2_[e] = 2 * weight;
   enabled_[e] = enabled;
+  adj_[adj_pos_[2 * e]].w2 = adj_[adj_pos_[2 * e + 1]].w2 = enabled ? w2_[e] : kDisabled;
   if (kept_) updated_.push_back(e);
   return *this;
 }
@@ -177,8 +178,8 @@ void BlossomMatching::shift_parity() {
     for (int u : scratch_) {
       const int64_t yu = y_[u] + top_[t].off;
       for (int k = adj_start_[u]; k < adj_start_[u + 1]; ++k) {
-        const int e = adj_edge_[k], v = other(e, u);
-        if (!enabled_[e]) continue;
+        const int e = adj_[k].edge, v = adj_[k].other;
+        if (adj_[k].w2 == kDisabled) continue;
         const int r = top_of(v);
         if (r == t || literal[r] < 0 || (literal[r] ^ 1) == literal[t]) continue;
         if (literal[t] < literal[r] && yu + y_[v] + top_[r].off == w2_[e])
@@ -244,8 +245,8 @@ void BlossomMatching::resume() {
   for (int v : open) {
     int64_t y = std::numeric_limits<int64_t>::min();
     for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k) {
-      const int e = adj_edge_[k];
-      if (enabled_[e]) y = std::max(y, w2_[e] - dual(other(e, v)));
+      const Incidence& in = adj_[k];
+      if (in.w2 != kDisabled) y = std::max(y, in.w2 - dual(in.other));
     }
     if (y == std::numeric_limits<int64_t>::min()) y = dual(v);  // no edge: anything goes
     top_[v].off = 0;

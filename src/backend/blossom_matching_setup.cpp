@@ -34,11 +34,15 @@ BlossomMatching::BlossomMatching(int num_nodes, std::span<const int> end_a,
     ++adj_start_[b + 1];
   }
   for (int v = 0; v < n_; ++v) adj_start_[v + 1] += adj_start_[v];
-  adj_edge_.resize(2 * m);
+  adj_.resize(2 * m);
+  adj_pos_.resize(2 * m);
   std::vector<int> fill(adj_start_.begin(), adj_start_.end() - 1);
   for (size_t e = 0; e < m; ++e) {
-    adj_edge_[fill[end_a_[e]]++] = static_cast<int>(e);
-    adj_edge_[fill[end_b_[e]]++] = static_cast<int>(e);
+    const int a = end_a_[e], b = end_b_[e], ed = static_cast<int>(e);
+    adj_pos_[2 * e] = fill[a];
+    adj_[fill[a]++] = {b, ed, w2_[e]};
+    adj_pos_[2 * e + 1] = fill[b];
+    adj_[fill[b]++] = {a, ed, w2_[e]};
   }
 }
 
@@ -100,7 +104,7 @@ void BlossomMatching::start() {
     for (int v = 0; v < n_; ++v) {
       int64_t best = std::numeric_limits<int64_t>::min();
       for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k)
-        if (enabled_[adj_edge_[k]]) best = std::max(best, w2_[adj_edge_[k]] / 2);
+        if (adj_[k].w2 != kDisabled) best = std::max(best, adj_[k].w2 / 2);
       // Even, like every dual the start hands over: then all trees share their duals' parity
       // and every dual change is an integer (see the header).
       if (best != std::numeric_limits<int64_t>::min()) y_[v] = best + (best & 1);
@@ -114,8 +118,8 @@ void BlossomMatching::start() {
     for (int v = 0; v < n_; ++v) {
       int64_t need = std::numeric_limits<int64_t>::min();
       for (int k = adj_start_[v]; k < adj_start_[v + 1]; ++k) {
-        const int e = adj_edge_[k];
-        if (enabled_[e]) need = std::max(need, w2_[e] - y_[other(e, v)]);
+        const Incidence& in = adj_[k];
+        if (in.w2 != kDisabled) need = std::max(need, in.w2 - y_[in.other]);
       }
       if (need != std::numeric_limits<int64_t>::min()) y_[v] = need;
     }
