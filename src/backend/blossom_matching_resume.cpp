@@ -178,11 +178,11 @@ void BlossomMatching::shift_parity() {
     for (int u : scratch_) {
       const int64_t yu = y_[u] + top_[t].off;
       for (int k = adj_start_[u]; k < adj_start_[u + 1]; ++k) {
-        const int e = adj_[k].edge, v = adj_[k].other;
-        if (adj_[k].w2 == kDisabled) continue;
-        const int r = top_of(v);
+        const Incidence& in = adj_[k];
+        if (in.w2 == kDisabled) continue;
+        const int v = in.other, r = top_of(v);
         if (r == t || literal[r] < 0 || (literal[r] ^ 1) == literal[t]) continue;
-        if (literal[t] < literal[r] && yu + y_[v] + top_[r].off == w2_[e])
+        if (literal[t] < literal[r] && yu + y_[v] + top_[r].off == in.w2)
           clauses.emplace_back(literal[t], literal[r]);
       }
     }
