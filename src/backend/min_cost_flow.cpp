@@ -9,15 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <utility>
 
-#include "backend/convex_network_simplex.hpp"
-#include "backend/merge_parallel_arcs.hpp"
 #include "backend/shortest_path_flow.hpp"
 
 namespace bimdf::detail {
@@ -64,7 +58,6 @@ std::vector<int64_t> scaled_costs(const DirectedMcf& mcf, double scale) {
 struct SimplexOutcome {
   MinCostFlowStatus status = MinCostFlowStatus::Infeasible;
   std::vector<int64_t> flow, potential;
-  std::vector<int> tree_parent;  // ours only
 };
 
 SimplexOutcome lemon_network_simplex(const DirectedMcf& mcf, const std::vector<int>& source,
@@ -140,56 +133,10 @@ bool certifies_optimality(const DirectedMcf& mcf, const MinCostFlowResult& r) {
   return net == mcf.supply;
 }
 
-// Our network simplex on `mcf`'s parallel and opposite arcs merged into convex ones
-// (merge_parallel_arcs.hpp), with integer costs `cost`: Optimal with flow and potentials, or
-// nothing when the merge or the solver does not apply (supplies not summing to 0, ranges
-// beyond ±2^62) or the network is infeasible or unbounded, which LEMON then decides.
-std::optional<SimplexOutcome> convex_network_simplex(const DirectedMcf& mcf,
-                                                     const std::vector<int64_t>& cost,
-                                                     const std::vector<int>& start_tree) {
-  int64_t total = 0;
-  for (int64_t b : mcf.supply)
-    if (__builtin_add_overflow(total, b, &total)) return std::nullopt;
-  if (total != 0) return std::nullopt;
-  const std::optional<MergedArcs> merged = merge_parallel_arcs(mcf, cost);
-  if (!merged) return std::nullopt;
-  ConvexNetworkSimplex solver(merged->convex);
-  if (!start_tree.empty()) solver.start_tree(start_tree);
-  auto t0 = std::chrono::steady_clock::now();
-  auto st = solver.run();
-  if (getenv("CNS_DEBUG")) fprintf(stderr, "CNS n=%d m=%d merged=%d pivots=%ld cuts=%ld/%d status=%d %.1f ms\n", mcf.num_nodes(), mcf.num_arcs(), merged->convex.num_arcs(), (long)solver.pivots(), (long)solver.start_tree_cuts(), (int)start_tree.size(), (int)st, std::chrono::duration<double,std::milli>(std::chrono::steady_clock::now()-t0).count());
-  if (st != ConvexNetworkSimplex::Status::Optimal) return std::nullopt;
-  std::vector<int64_t> merged_flow(merged->convex.num_arcs());
-  for (int j = 0; j < merged->convex.num_arcs(); ++j) merged_flow[j] = solver.flow(j);
-  SimplexOutcome out;
-  out.status = MinCostFlowStatus::Optimal;
-  out.flow = merged->split(merged_flow, mcf.capacity);
-  out.potential.resize(mcf.num_nodes());
-  for (int v = 0; v < mcf.num_nodes(); ++v) out.potential[v] = solver.potential(v);
-  out.tree_parent = solver.tree_parent();
-  return out;
-}
-
-// A network simplex from scratch on the scaled integer costs `cost` (scaled_costs): ours on
-// merged arcs, its result checked; LEMON's when ours does not apply or does not certify its
-// result, and to decide infeasibility and unboundedness.
-MinCostFlowResult network_simplex(const DirectedMcf& mcf, double scale, std::vector<int64_t> cost,
-                                   const std::vector<int>& start_tree = {}) {
-  if (std::optional<SimplexOutcome> ours = convex_network_simplex(mcf, cost, start_tree)) {
-    MinCostFlowResult result =
-        optimal_result(mcf, scale, cost, std::move(ours->flow), std::move(ours->potential));
-    result.tree_parent = std::move(ours->tree_parent);
-    if (getenv("CNS_DEBUG") && atoi(getenv("CNS_DEBUG")) == 2) {
-      auto t0 = std::chrono::steady_clock::now();
-      SimplexOutcome s = lemon_network_simplex(mcf, mcf.source, mcf.target, cost, mcf.supply);
-      fprintf(stderr, "  LEMON same LP %.1f ms\n", std::chrono::duration<double,std::milli>(std::chrono::steady_clock::now()-t0).count());
-    }
-    if (certifies_optimality(mcf, result)) return result;
-    fprintf(stderr, "CERT FAILED\n");
-  }
-  auto t0 = std::chrono::steady_clock::now();
+// LEMON's network simplex from scratch on the scaled integer costs `cost` (scaled_costs):
+// decides unboundedness.
+MinCostFlowResult network_simplex(const DirectedMcf& mcf, double scale, std::vector<int64_t> cost) {
   SimplexOutcome s = lemon_network_simplex(mcf, mcf.source, mcf.target, cost, mcf.supply);
-  if (getenv("CNS_DEBUG")) fprintf(stderr, "LEMON n=%d m=%d %.1f ms\n", mcf.num_nodes(), mcf.num_arcs(), std::chrono::duration<double,std::milli>(std::chrono::steady_clock::now()-t0).count());
   if (s.status != MinCostFlowStatus::Optimal) {
     MinCostFlowResult result;
     result.status = s.status;
@@ -256,8 +203,7 @@ MinCostFlowResult network_simplex_from(const DirectedMcf& mcf, double scale, int
 
 MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2,
                                       const std::vector<double>& start_potential,
-                                      int started_simplex_min_nodes,
-                                      const std::vector<int>& start_tree) {
+                                      int started_simplex_min_nodes) {
   const int n = mcf.num_nodes(), m = mcf.num_arcs();
   MinCostFlowResult result;
   if (n == 0) {  // LEMON reports an empty network as infeasible
@@ -266,11 +212,6 @@ MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2,
   }
   const double scale = integer_cost_scale(mcf.cost, n, std::min(limit_log2, 60));
   std::vector<int64_t> cost = scaled_costs(mcf, scale);
-  if (static_cast<int>(start_tree.size()) == n && getenv("CNS_TREE")) {
-    MinCostFlowResult r = network_simplex(mcf, scale, std::move(cost), start_tree);
-    r.method = MinCostFlowMethod::WarmStart;
-    return r;
-  }
   if (static_cast<int>(start_potential.size()) != n)
     return network_simplex(mcf, scale, std::move(cost));
   // Started, but the network simplex answers: the start was too far off, or the solver could

@@ -57,9 +57,6 @@ struct MinCostFlowResult {
   std::vector<int64_t> scaled_cost;
   std::vector<int64_t> reduced_cost;
   std::vector<int64_t> potential;  // π per node, when Optimal
-  // The network simplex's final spanning tree as a parent per node (−1: its root), when our
-  // own simplex solved it: a start for the next solve on a network with the same nodes.
-  std::vector<int> tree_parent;
 };
 
 // A start the shortest paths cannot take still starts the network simplex on networks of at
@@ -79,8 +76,7 @@ inline constexpr int kStartedSimplexMinNodes = 32768;
 // still starts the network simplex (tests lower it).
 MinCostFlowResult solve_min_cost_flow(const DirectedMcf& mcf, int limit_log2 = 60,
                                       const std::vector<double>& start_potential = {},
-                                      int started_simplex_min_nodes = kStartedSimplexMinNodes,
-                                      const std::vector<int>& start_tree = {});
+                                      int started_simplex_min_nodes = kStartedSimplexMinNodes);
 
 // The optimal potentials of `r` in units of cost (π / S): what a later, similar problem may
 // start from.

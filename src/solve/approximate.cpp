@@ -43,12 +43,10 @@ std::vector<std::pair<ParityMode, DoubleCoverKind>> attempt_order(const Approxim
 // and leaves its optimal potentials in out.potential.
 std::optional<std::vector<int64_t>> solve_cover(const BiMcf& bimcf, DoubleCoverKind kind,
                                                 const std::vector<double>& start_potential,
-                                                ApproximateOutcome& out,
-                                                const std::vector<int>& start_tree = {}) {
+                                                ApproximateOutcome& out) {
   const DoubleCover dc = build_double_cover(bimcf, kind);
   out.mcf_arcs = dc.mcf.num_arcs();
-  const MinCostFlowResult r = solve_min_cost_flow(dc.mcf, 60, start_potential,
-                                                  kStartedSimplexMinNodes, start_tree);
+  const MinCostFlowResult r = solve_min_cost_flow(dc.mcf, 60, start_potential);
   out.min_cost_flows.add(r.method);
   if (r.status == MinCostFlowStatus::Infeasible) return std::nullopt;
   if (r.status == MinCostFlowStatus::Unbounded)
@@ -56,7 +54,6 @@ std::optional<std::vector<int64_t>> solve_cover(const BiMcf& bimcf, DoubleCoverK
     // unbounded capacity exists: this is a bug.
     throw SolverError("internal error: the double cover min-cost flow is unbounded");
   out.potential = potentials_in_cost_units(r);
-  out.tree = r.tree_parent;
   return dc.lift(r.flow, bimcf.num_arcs());
 }
 
@@ -103,7 +100,7 @@ std::vector<int64_t> penalized_cover_flow(const Problem& p, const std::vector<in
 // the covers linearized around the rounded optimum start from them.
 std::vector<int64_t> relaxation_centered_guess(const Problem& p, std::vector<int64_t> guess,
                                                int max_deviation, std::vector<double>& potential,
-                                               std::vector<int>& tree, MinCostFlowTally& tally) {
+                                               MinCostFlowTally& tally) {
   LinearizeOptions lp_opt;
   lp_opt.max_deviation = max_deviation;
   lp_opt.step = 2;
@@ -113,7 +110,6 @@ std::vector<int64_t> relaxation_centered_guess(const Problem& p, std::vector<int
   tally.add(r.method);
   if (r.status != MinCostFlowStatus::Optimal) return guess;
   potential = potentials_in_cost_units(r);
-  tree = r.tree_parent;
   // The relaxation's directed flow is twice the Bi-MCF flow: x = g + y in halves.
   const std::vector<int64_t> twice = dc.lift(r.flow, lin.mcf.num_arcs());
   for (int64_t& g : guess) g *= 2;
@@ -159,8 +155,7 @@ ApproximateOutcome approximate(const Problem& p, const ApproximateOptions& opt) 
   std::vector<int64_t> guess(p.num_edges());
   for (int e = 0; e < p.num_edges(); ++e) guess[e] = p.cost[e].argmin(p.lower[e], p.upper[e]);
   std::vector<double> lp_potential;
-  std::vector<int> lp_tree;
-  guess = relaxation_centered_guess(p, std::move(guess), opt.max_deviation, lp_potential, lp_tree,
+  guess = relaxation_centered_guess(p, std::move(guess), opt.max_deviation, lp_potential,
                                     out.min_cost_flows);
   out.time_lp_guess_s = clock.lap();
 
@@ -179,7 +174,7 @@ ApproximateOutcome approximate(const Problem& p, const ApproximateOptions& opt) 
     const Linearization lin = linearize(p, repaired.guess, lin_opt);
     out.time_linearize_s += clock.lap();
     ++out.attempts;
-    std::optional<std::vector<int64_t>> y = solve_cover(lin.mcf, cover, lp_potential, out, lp_tree);
+    std::optional<std::vector<int64_t>> y = solve_cover(lin.mcf, cover, lp_potential, out);
     out.time_mcf_s += clock.lap();
     if (!y) continue;
     out.flow = lin.lift(*y);
@@ -198,7 +193,6 @@ ApproximateOutcome approximate(const Problem& p, const ApproximateOptions& opt) 
     return out;
   }
   out.potential.clear();  // the relaxation's, not the flow's
-  out.tree.clear();
   // Last resort, exact either way: phase 1 (phase_one.hpp) refined to its optimum, started
   // from the penalized cover's flow so that little artificial flow is left to remove.
   const ParityRepair repaired = repair_parity(p, guess, opt.parity);

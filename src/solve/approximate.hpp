@@ -40,9 +40,6 @@ struct ApproximateOutcome {
   // The last cover's optimal potentials per double-cover node (v⁺ = 2v, v⁻ = 2v + 1), in units
   // of cost: refinement's first LP starts from them. Empty on the last-resort paths.
   std::vector<double> potential;
-  // The last cover's final spanning tree (min_cost_flow.hpp: tree_parent), when our network
-  // simplex solved it: refinement's first LP starts from it.
-  std::vector<int> tree;
   MinCostFlowTally min_cost_flows;  // how the LP guess and the covers were solved
   double time_lp_guess_s = 0, time_parity_s = 0, time_linearize_s = 0, time_mcf_s = 0;
 };

@@ -58,7 +58,6 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
   if (approx.status == SolveStatus::Feasible && unchained) {
     approx.flow = simplified.project_unchained(approx.flow);
     approx.potential = simplified.project_unchained_potential(approx.potential);
-    approx.tree = simplified.project_unchained_tree(approx.tree);
   }
   r.path = approx.path;
   r.min_cost_flows = approx.min_cost_flows;
@@ -94,7 +93,7 @@ ComponentResult solve_component(const Problem& component, const ComponentConfig&
     };
   }
   if (config.exact) {
-    RefineResult refined = refine(p, std::move(flow), refine_options, approx.potential, approx.tree);
+    RefineResult refined = refine(p, std::move(flow), refine_options, approx.potential);
     flow = std::move(refined.flow);
     r.rounds = refined.rounds;
     r.matchings = refined.matchings;

@@ -126,7 +126,7 @@ std::vector<int64_t> round_matching_duals(const BMatchingReduction& red,
 }
 
 RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOptions& options,
-                    std::vector<double> start_potential, std::vector<int> start_tree) {
+                    std::vector<double> start_potential) {
   const auto start = std::chrono::steady_clock::now();
   RefineResult r;
   r.flow = std::move(flow);
@@ -152,7 +152,6 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     round_done(true);
   };
   std::vector<double> lp_potential = std::move(start_potential);
-  std::vector<int> lp_tree = std::move(start_tree);
   std::optional<PersistentRounds> kept;
   if (options.matching == MatchingBackend::Persistent) kept.emplace(p, options.hub_throughflow);
   while (true) {
@@ -199,9 +198,8 @@ RefineResult refine(const Problem& p, std::vector<int64_t> flow, const RefineOpt
     const Linearization lin = linearize(p, r.flow, unit_pieces);
     r.time_build_s += seconds_since(t);
     t = std::chrono::steady_clock::now();
-    ResidualPruning pruned = prune_residual(lin.mcf, lp_potential, windows.throughflow, lp_tree);
+    ResidualPruning pruned = prune_residual(lin.mcf, lp_potential, windows.throughflow);
     lp_potential = std::move(pruned.potential);
-    lp_tree = std::move(pruned.tree);
     r.lps.add(pruned.lp_method);
     r.time_pruning_s += seconds_since(t);
     ++r.rounds;

@@ -96,7 +96,6 @@ std::vector<int64_t> round_matching_duals(const BMatchingReduction& bmatching,
 // empty) warm-starts the first round's LP: the approximation's last cover gives them, and each
 // later round starts from the previous round's LP (min_cost_flow.hpp).
 RefineResult refine(const Problem& problem, std::vector<int64_t> flow,
-                    const RefineOptions& options = {}, std::vector<double> start_potential = {},
-                    std::vector<int> start_tree = {});
+                    const RefineOptions& options = {}, std::vector<double> start_potential = {});
 
 }  // namespace bimdf::detail

@@ -38,15 +38,13 @@ struct RelaxationOptimum {
 };
 
 RelaxationOptimum relaxation_optimum(const BiMcf& residual,
-                                     const std::vector<double>& start_potential, int scale_log2,
-                                     const std::vector<int>& start_tree = {}) {
+                                     const std::vector<double>& start_potential, int scale_log2) {
   for (int v = 0; v < residual.num_nodes(); ++v)
     if (residual.demand[v] != 0)
       throw std::invalid_argument("residual pruning needs zero demands (node " + std::to_string(v) +
                                   ")");
   DoubleCover dc = build_double_cover(residual, DoubleCoverKind::Relaxation);
-  MinCostFlowResult lp = solve_min_cost_flow(dc.mcf, scale_log2, start_potential,
-                                             kStartedSimplexMinNodes, start_tree);
+  MinCostFlowResult lp = solve_min_cost_flow(dc.mcf, scale_log2, start_potential);
   if (lp.status != MinCostFlowStatus::Optimal)
     throw std::logic_error(
         "residual pruning: the LP relaxation of a circulation problem with "
@@ -90,20 +88,17 @@ ResidualLp solve_residual_lp(const BiMcf& residual, const std::vector<double>& s
 }
 
 ResidualPruning prune_residual(const BiMcf& residual, const std::vector<double>& start_potential,
-                               std::span<const int> min_throughflow,
-                               const std::vector<int>& start_tree) {
+                               std::span<const int> min_throughflow) {
   ResidualPruning out;
   const int n = residual.num_nodes(), m = residual.num_arcs();
   // Named references, not a structured binding: a lambda below uses `lp`, which C++17 (and
   // clang, which builds the fuzzers) does not allow to capture from a binding.
   const RelaxationOptimum optimum =
-      relaxation_optimum(residual, start_potential, lp_scale_log2(residual, min_throughflow),
-                         start_tree);
+      relaxation_optimum(residual, start_potential, lp_scale_log2(residual, min_throughflow));
   const DoubleCover& dc = optimum.dc;
   const MinCostFlowResult& lp = optimum.lp;
   const __int128 lp_value = optimum.value;
   out.potential = potentials_in_cost_units(lp);
-  out.tree = lp.tree_parent;
   out.lp_method = lp.method;
 
   // 128-bit sums: each reduced cost is below 3·2^60 (min_cost_flow.hpp).

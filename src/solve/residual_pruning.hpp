@@ -52,8 +52,6 @@ struct ResidualPruning {
   // The LP's optimal potentials per double-cover node (v⁺ = 2v, v⁻ = 2v + 1 of the residual),
   // in units of cost: the next round's LP starts from them (min_cost_flow.hpp).
   std::vector<double> potential;
-  // The LP's final spanning tree (min_cost_flow.hpp: tree_parent), when our simplex solved it.
-  std::vector<int> tree;
   MinCostFlowMethod lp_method = MinCostFlowMethod::NetworkSimplex;  // how the LP was solved
 
   // A circulation of `reduced` as one of the residual (fixed arcs 0).
@@ -93,7 +91,6 @@ ResidualLp solve_residual_lp(const BiMcf& residual, const std::vector<double>& s
 // parts' degrees, at tiered nodes), for the scale bound.
 ResidualPruning prune_residual(const BiMcf& residual,
                                const std::vector<double>& start_potential = {},
-                               std::span<const int> min_throughflow = {},
-                               const std::vector<int>& start_tree = {});
+                               std::span<const int> min_throughflow = {});
 
 }  // namespace bimdf::detail

@@ -50,20 +50,4 @@ std::vector<double> SimplifiedComponent::project_unchained_potential(
   return projected;
 }
 
-std::vector<int> SimplifiedComponent::project_unchained_tree(const std::vector<int>& parent) const {
-  if (!chains_ || parent.empty()) return parent;
-  const std::vector<int>& kept = chains_->reduced_node;
-  std::vector<int> projected(2 * static_cast<size_t>(chains_->reduced.num_nodes()), -1);
-  for (size_t x = 0; x < parent.size(); ++x) {
-    const int w = kept[x / 2];
-    if (w < 0) continue;
-    int y = parent[x];
-    // Bounded by the number of nodes, should `parent` not be a tree.
-    for (size_t steps = 0; y >= 0 && kept[y / 2] < 0 && steps < parent.size(); ++steps)
-      y = parent[y];
-    if (y >= 0 && kept[y / 2] >= 0) projected[2 * w + (x & 1)] = 2 * kept[y / 2] + (y & 1);
-  }
-  return projected;
-}
-
 }  // namespace bimdf::detail

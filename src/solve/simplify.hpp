@@ -33,10 +33,6 @@ class SimplifiedComponent {
   // Double-cover potentials (v⁺ = 2v, v⁻ = 2v + 1) of the unchained problem's nodes → those of
   // problem()'s nodes, which are the unchained nodes that are not pass-through.
   std::vector<double> project_unchained_potential(const std::vector<double>& potential) const;
-  // A spanning tree of the unchained problem's double cover, as a parent per node (−1: the
-  // root; min_cost_flow.hpp: tree_parent) → one of problem()'s: each node's parent is its
-  // nearest ancestor that is not pass-through (a chain's pass-through nodes lie on one path).
-  std::vector<int> project_unchained_tree(const std::vector<int>& parent) const;
   // The component's id of a node of problem() (of unchained_problem() when `unchained`), or −1
   // for the boundary node that carries the outer edges (outer_edges.hpp).
   int component_node(int node, bool unchained = false) const;
