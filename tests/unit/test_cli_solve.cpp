@@ -1,5 +1,6 @@
 // `bimdf solve`: the solution JSON (status, objective, flow, stats), exit codes 0/1/2, -o files,
 // the human report, --progress, and that the written flow passes `bimdf check`.
+#include <elf.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -90,6 +91,27 @@ TEST_F(CliSolve, HugePageReexecLeavesResultsUnchanged) {
     EXPECT_NE(bad.err.find("--matching: foo not in {blossom,lemon,persistent}"), std::string::npos)
         << bad.err;
   }
+}
+
+// The program is linked statically where the build could (CMakeLists.txt: BIMDF_STATIC_CLI;
+// a small solve's process then takes about half the time, docs/benchmarks.md), else
+// dynamically: an ELF program header of type PT_INTERP names the dynamic loader.
+TEST_F(CliSolve, ProgramIsLinkedAsConfigured) {
+  std::ifstream program(BIMDF_CLI_PATH, std::ios::binary);
+  Elf64_Ehdr header{};
+  ASSERT_TRUE(program.read(reinterpret_cast<char*>(&header), sizeof header));
+  ASSERT_EQ(std::string(reinterpret_cast<const char*>(header.e_ident), 4),
+            "\x7f"
+            "ELF");
+  ASSERT_EQ(header.e_phentsize, sizeof(Elf64_Phdr));
+  bool interpreter = false;
+  for (int i = 0; i < header.e_phnum; ++i) {
+    Elf64_Phdr segment{};
+    program.seekg(static_cast<std::streamoff>(header.e_phoff + i * sizeof segment));
+    ASSERT_TRUE(program.read(reinterpret_cast<char*>(&segment), sizeof segment));
+    interpreter = interpreter || segment.p_type == PT_INTERP;
+  }
+  EXPECT_EQ(interpreter, !BIMDF_CLI_STATIC) << BIMDF_CLI_PATH;
 }
 
 TEST_F(CliSolve, WritesSolutionFileThatCheckAccepts) {
