@@ -78,6 +78,9 @@ struct Problem {
   int add_node(int64_t node_demand = 0);
   // Appends an edge and returns its id. `b` omitted: an outer edge.
   int add_edge(End a, std::optional<End> b, int64_t lo, int64_t up, Cost c);
+  // Makes room for this many nodes and edges in all (contents unchanged), so that building a
+  // problem of known size allocates each array once.
+  void reserve(int nodes, int edges);
 
   bool is_outer(int e) const { return end_b[e].node == kNoNode; }
   EdgeKind edge_kind(int e) const;

@@ -27,6 +27,17 @@ int Problem::add_edge(End a, std::optional<End> b, int64_t lo, int64_t up, Cost 
   return num_edges() - 1;
 }
 
+void Problem::reserve(int nodes, int edges) {
+  demand.reserve(nodes);
+  if (!node_name.empty()) node_name.reserve(nodes);
+  end_a.reserve(edges);
+  end_b.reserve(edges);
+  lower.reserve(edges);
+  upper.reserve(edges);
+  cost.reserve(edges);
+  if (!edge_name.empty()) edge_name.reserve(edges);
+}
+
 EdgeKind Problem::edge_kind(int e) const {
   const End a = end_a[e], b = end_b[e];
   if (b.node == kNoNode) return a.head ? EdgeKind::OuterHead : EdgeKind::OuterTail;

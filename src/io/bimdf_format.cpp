@@ -5,6 +5,7 @@
 // `inf`/`-inf` bounds, cost tags Z (zero with guess), L, B, P. A first line starting with
 // "# bimdf-format" marks such a file; only then is 2147483647 a finite number instead of
 // libSatsuma's infinity.
+#include <algorithm>
 #include <limits>
 #include <ostream>
 #include <sstream>
@@ -49,6 +50,10 @@ class BimdfReader {
     }
     const int64_t m = read_count("the edge count");
     edge_line_.reserve(static_cast<size_t>(m));
+    // An edge takes at least 13 bytes ("u v h h l u K"): a declared count beyond what the file
+    // can hold does not reserve more than that.
+    p.reserve(static_cast<int>(n), static_cast<int>(std::min<uint64_t>(
+                                       static_cast<uint64_t>(m), scan_.remaining() / 13 + 1)));
     for (int64_t e = 0; e < m; ++e) read_edge(p, static_cast<int>(e), static_cast<int>(n));
     if (Token t = scan_.next(); !t.text.empty())
       scan_.fail(t.line, "unexpected token " + quote(t.text) + " after the last edge (the file declares " +

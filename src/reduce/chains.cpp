@@ -30,6 +30,7 @@ ChainCollapse collapse_chains(const Problem& p) {
   }
 
   ChainCollapse c;
+  c.reduced.reserve(n, m);  // at most (chains become single edges)
   c.reduced_node.assign(n, -1);
   for (int v = 0; v < n; ++v)
     if (!pass[v]) c.reduced_node[v] = c.reduced.add_node(p.demand[v]);

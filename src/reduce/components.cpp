@@ -7,6 +7,12 @@ ComponentSplit split_components(const Problem& p) {
   int count = 0;
   s.part_of_node = connected_components(p, &count);
   s.parts.resize(count);
+  {
+    std::vector<int> nodes(count, 0), edges(count, 0);
+    for (int v = 0; v < p.num_nodes(); ++v) ++nodes[s.part_of_node[v]];
+    for (int e = 0; e < p.num_edges(); ++e) ++edges[s.part_of_node[p.end_a[e].node]];
+    for (int k = 0; k < count; ++k) s.parts[k].reserve(nodes[k], edges[k]);
+  }
   s.node_in_part.resize(p.num_nodes());
   for (int v = 0; v < p.num_nodes(); ++v)
     s.node_in_part[v] = s.parts[s.part_of_node[v]].add_node(p.demand[v]);

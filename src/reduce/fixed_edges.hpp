@@ -14,7 +14,7 @@
 namespace bimdf::detail {
 
 struct FixedEdgeElimination {
-  Problem reduced;
+  Problem reduced;                 // solve/simplify.cpp moves it on to outer-edge elimination
   std::vector<int> original_edge;  // reduced edge → original edge
   std::vector<int> reduced_edge;   // original edge → reduced edge, or −1 when fixed
   std::vector<int64_t> fixed_flow; // original edge → its flow when fixed (else 0)

@@ -23,6 +23,8 @@ struct OuterEdgeElimination {
   std::vector<int64_t> lift(std::span<const int64_t> reduced_flow) const;
 };
 
-OuterEdgeElimination eliminate_outer_edges(const Problem& problem);
+// Takes the problem by value: a caller done with it moves it in (solve/simplify.cpp), which
+// saves a copy of every edge.
+OuterEdgeElimination eliminate_outer_edges(Problem problem);
 
 }  // namespace bimdf::detail

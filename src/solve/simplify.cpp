@@ -1,12 +1,14 @@
 #include "solve/simplify.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace bimdf::detail {
 
 SimplifiedComponent::SimplifiedComponent(const Problem& component, bool collapse)
     : fixed_(eliminate_fixed_edges(component)),
-      outer_(eliminate_outer_edges(fixed_.reduced)),
+      // Only the lift needs fixed_ from here on, not its reduced problem: moved on.
+      outer_(eliminate_outer_edges(std::move(fixed_.reduced))),
       component_nodes_(component.num_nodes()) {
   if (!collapse) return;
   chains_ = collapse_chains(outer_.reduced);
