@@ -9,10 +9,7 @@ FixedEdgeElimination eliminate_fixed_edges(const Problem& p) {
   std::vector<__int128> demand(p.demand.begin(), p.demand.end());
   r.reduced_edge.assign(p.num_edges(), -1);
   r.fixed_flow.assign(p.num_edges(), 0);
-  int kept = 0;
-  for (int e = 0; e < p.num_edges(); ++e) kept += p.lower[e] != p.upper[e];
-  r.reduced.reserve(p.num_nodes(), kept);
-  r.original_edge.reserve(kept);
+  r.reduced.reserve(p.num_nodes(), p.num_edges());  // at most
   for (int e = 0; e < p.num_edges(); ++e) {
     if (p.lower[e] == p.upper[e]) {
       const int64_t x = p.lower[e];
