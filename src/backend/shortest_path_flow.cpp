@@ -195,15 +195,28 @@ ShortestPathFlow::Search ShortestPathFlow::augment_from(int s) {
   heap.clear();
   std::vector<int>& settled_order = settled_order_;
   settled_order.clear();
+  // Nodes reached at the distance being settled skip the heap: with good potentials most
+  // residual arcs are tight, and a search mostly walks them.
+  std::vector<int>& level = level_;
+  level.clear();
+  int64_t d = 0;
   node_[s].dist = 0;
   node_[s].mark = reached;
-  heap.push_back({0, s});
+  level.push_back(s);
   int t = -1;
-  while (!heap.empty()) {
+  while (true) {
     if (work_ > work_limit_) return Search::GaveUp;
-    std::pop_heap(heap.begin(), heap.end(), later);
-    const auto [d, u] = heap.back();
-    heap.pop_back();
+    int u;
+    if (!level.empty()) {
+      u = level.back();
+      level.pop_back();
+    } else {
+      if (heap.empty()) break;
+      std::pop_heap(heap.begin(), heap.end(), later);
+      d = heap.back().first;
+      u = heap.back().second;
+      heap.pop_back();
+    }
     NodeState& x = node_[u];
     if (x.mark == settled || d != x.dist) continue;
     x.mark = settled;
@@ -224,8 +237,12 @@ ShortestPathFlow::Search ShortestPathFlow::augment_from(int s) {
         y.mark = reached;
         y.dist = nd;
         y.pred = p;
-        heap.push_back({nd, a.head});
-        std::push_heap(heap.begin(), heap.end(), later);
+        if (nd == d) {
+          level.push_back(a.head);
+        } else {
+          heap.push_back({nd, a.head});
+          std::push_heap(heap.begin(), heap.end(), later);
+        }
       }
     }
   }
