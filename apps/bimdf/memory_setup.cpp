@@ -1,12 +1,18 @@
 #include "memory_setup.hpp"
 
 #include <malloc.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace bimdf::cli {
 namespace {
@@ -59,6 +65,57 @@ void configure_process_memory(char** argv) {
   // avoids that at no cost in peak memory.
   mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's maximum
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
+}
+
+}  // namespace bimdf::cli
+
+namespace bimdf::cli {
+
+HeapPrefault::HeapPrefault(std::uintmax_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+  constexpr std::uintmax_t kBlock = 8 << 20;  // below the mmap threshold: served by the heap
+  if (bytes < (4 << 20) || std::thread::hardware_concurrency() < 2) return;
+  std::vector<std::pair<char*, std::uintmax_t>> blocks;
+  for (std::uintmax_t done = 0; done < bytes; done += kBlock) {
+    const std::uintmax_t size = std::min(kBlock, bytes - done);
+    char* block = static_cast<char*>(std::malloc(size));
+    if (!block) break;
+    blocks.emplace_back(block, size);
+  }
+  for (const auto& block : blocks) std::free(block.first);
+  if (blocks.empty()) return;
+  thread_ = std::thread([blocks] {
+    const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+    for (auto it = blocks.rbegin(); it != blocks.rend(); ++it) {
+      const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(it->first);
+      const std::uintptr_t begin = (start + page - 1) & ~(page - 1);
+      const std::uintptr_t end = (start + it->second) & ~(page - 1);
+      if (end <= begin) continue;
+      // Freed blocks may have merged and been handed out again: the advice leaves contents
+      // alone, and a range no longer mapped only makes it fail.
+      if (madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE) != 0) return;
+    }
+  });
+#else
+  (void)bytes;
+#endif
+}
+
+HeapPrefault::~HeapPrefault() {
+  if (thread_.joinable()) thread_.join();
+}
+
+std::uintmax_t solve_heap_estimate(const std::string& path, bool exact) {
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error) return 0;
+  std::ifstream in(path, std::ios::binary);
+  char c = ' ';
+  while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
+  }
+  const bool json = in && c == '{';
+  const std::uintmax_t ratio = json ? (exact ? 10 : 8) : (exact ? 26 : 20);
+  return size * ratio;
 }
 
 }  // namespace bimdf::cli

@@ -8,6 +8,7 @@
 
 #include "bimdf/io.hpp"
 #include "bimdf/solve.hpp"
+#include "memory_setup.hpp"
 #include "number_checks.hpp"
 
 namespace bimdf::cli {
@@ -213,6 +214,7 @@ void add_matching_option(CLI::App* cmd, MatchingBackend& backend, const std::str
 
 int run_solve(const SolveCommandOptions& o) {
   const auto start = std::chrono::steady_clock::now();
+  const HeapPrefault prefault(solve_heap_estimate(o.problem, !o.approximate));
   const Problem problem = read_problem_file(o.problem);
   const double read_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
