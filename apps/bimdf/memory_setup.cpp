@@ -37,6 +37,17 @@ bool only_small_files(char** argv) {
   return any;
 }
 
+// Whether the command line asks only for the usage or the version (or for nothing): then the
+// program prints a few lines, and the re-exec would be most of its time (~3 ms).
+bool asks_for_text_only(char** argv) {
+  if (!argv[1]) return true;
+  for (char** arg = argv + 1; *arg; ++arg) {
+    const std::string a = *arg;
+    if (a == "-h" || a == "--help" || a == "--version") return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 void configure_process_memory(char** argv) {
@@ -48,7 +59,8 @@ void configure_process_memory(char** argv) {
   constexpr const char* kTunable = "glibc.malloc.hugetlb";
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   const std::string current = tunables ? tunables : "";
-  if (current.find(kTunable) == std::string::npos && !only_small_files(argv)) {
+  if (current.find(kTunable) == std::string::npos && !only_small_files(argv) &&
+      !asks_for_text_only(argv)) {
     const std::string wanted = (current.empty() ? "" : current + ":") + kTunable + "=1";
     if (setenv("GLIBC_TUNABLES", wanted.c_str(), 1) == 0) {
       execv("/proc/self/exe", argv);  // returns only on failure

@@ -13,8 +13,9 @@ namespace bimdf::cli {
 // glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES, since glibc reads its tunables only at start
 // — unless GLIBC_TUNABLES already names that tunable (set it to 0 to opt out), every file
 // named on the command line is small (under 256 KiB: the run takes milliseconds, and the
-// re-exec would cost more than huge pages save), or the re-exec fails (then the program simply
-// goes on). Then keeps freed memory in the heap (mallopt).
+// re-exec would cost more than huge pages save), the command line asks only for --help or
+// --version (or is empty), or the re-exec fails (then the program simply goes on). Then keeps
+// freed memory in the heap (mallopt).
 void configure_process_memory(char** argv);
 
 // Heap memory faulted in on another core while this one reads the input. The first touch of a
