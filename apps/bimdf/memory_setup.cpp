@@ -86,6 +86,10 @@ namespace bimdf::cli {
 HeapPrefault::HeapPrefault(std::uintmax_t bytes) {
 #ifdef MADV_POPULATE_WRITE
   constexpr std::uintmax_t kBlock = 8 << 20;  // below the mmap threshold: served by the heap
+  // At most a quarter of the machine's memory: the estimate is a multiple of a file's size.
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
+  if (pages > 0 && page_size > 0)
+    bytes = std::min(bytes, static_cast<std::uintmax_t>(pages) * page_size / 4);
   if (bytes < (4 << 20) || std::thread::hardware_concurrency() < 2) return;
   std::vector<std::pair<char*, std::uintmax_t>> blocks;
   for (std::uintmax_t done = 0; done < bytes; done += kBlock) {
@@ -96,9 +100,9 @@ HeapPrefault::HeapPrefault(std::uintmax_t bytes) {
   }
   for (const auto& block : blocks) std::free(block.first);
   if (blocks.empty()) return;
-  thread_ = std::thread([blocks] {
+  thread_ = std::thread([this, blocks] {
     const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-    for (auto it = blocks.rbegin(); it != blocks.rend(); ++it) {
+    for (auto it = blocks.rbegin(); it != blocks.rend() && !stop_.load(); ++it) {
       const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(it->first);
       const std::uintptr_t begin = (start + page - 1) & ~(page - 1);
       const std::uintptr_t end = (start + it->second) & ~(page - 1);
@@ -114,6 +118,11 @@ HeapPrefault::HeapPrefault(std::uintmax_t bytes) {
 }
 
 HeapPrefault::~HeapPrefault() {
+  stop_.store(true);
+  wait();
+}
+
+void HeapPrefault::wait() {
   if (thread_.joinable()) thread_.join();
 }
 

@@ -2,6 +2,7 @@
 // allocation in the process, so only a program may choose them).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <thread>
@@ -26,16 +27,21 @@ void configure_process_memory(char** argv);
 // allocations are served from them — then a thread asks the kernel to fault them in writable
 // (MADV_POPULATE_WRITE, Linux ≥ 5.14: no byte is written, so the main thread may already be
 // using them), from the top down, since the main thread allocates from the bottom. Does nothing
-// below 4 MiB, on a single core, or where the kernel lacks the advice. The destructor waits for
-// the thread.
+// below 4 MiB, on a single core, or where the kernel lacks the advice; faults in at most a
+// quarter of the machine's memory. The destructor stops the thread after the block it is
+// faulting in (8 MiB; a run that ends early, on an input error, does not wait for the rest)
+// and waits for it.
 class HeapPrefault {
  public:
   explicit HeapPrefault(std::uintmax_t bytes);
   ~HeapPrefault();
+  // Waits until every block is faulted in (or the advice failed).
+  void wait();
   HeapPrefault(const HeapPrefault&) = delete;
   HeapPrefault& operator=(const HeapPrefault&) = delete;
 
  private:
+  std::atomic<bool> stop_{false};
   std::thread thread_;
 };
 

@@ -62,7 +62,7 @@ TEST(HeapPrefault, NextAllocationsFindTheirPagesFaultedIn) {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   constexpr std::size_t kBytes = 48 << 20, kPages = kBytes / 4096;
-  { const HeapPrefault prefault(kBytes + (4 << 20)); }  // joins
+  HeapPrefault(kBytes + (4 << 20)).wait();
   const long before = minor_faults();
   const std::vector<char*> prefaulted = allocate_and_touch(kBytes, 1);
   const long with_prefault = minor_faults() - before;
@@ -81,12 +81,13 @@ TEST(HeapPrefault, LeavesWhatTheProgramWritesAlone) {
   constexpr std::size_t kBytes = 64 << 20;
   std::vector<char*> blocks;
   {
-    const HeapPrefault prefault(kBytes);
+    HeapPrefault prefault(kBytes);
     for (std::size_t done = 0; done < kBytes; done += 1 << 20) {
       blocks.push_back(static_cast<char*>(std::malloc(1 << 20)));
       for (std::size_t i = 0; i < (1 << 20); i += 512)
         blocks.back()[i] = static_cast<char>(blocks.size() + i / 512);
     }
+    prefault.wait();  // every block faulted in, some after this thread wrote to them
   }
   std::size_t wrong = 0;
   for (std::size_t b = 0; b < blocks.size(); ++b) {
