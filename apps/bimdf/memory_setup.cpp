@@ -79,10 +79,6 @@ void configure_process_memory(char** argv) {
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
 
-}  // namespace bimdf::cli
-
-namespace bimdf::cli {
-
 HeapPrefault::HeapPrefault(std::uintmax_t bytes) {
 #ifdef MADV_POPULATE_WRITE
   constexpr std::uintmax_t kBlock = 8 << 20;  // below the mmap threshold: served by the heap
