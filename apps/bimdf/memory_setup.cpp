@@ -86,7 +86,7 @@ HeapPrefault::HeapPrefault(std::uintmax_t bytes) {
   const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
   if (pages > 0 && page_size > 0)
     bytes = std::min(bytes, static_cast<std::uintmax_t>(pages) * page_size / 4);
-  if (bytes < (4 << 20) || std::thread::hardware_concurrency() < 2) return;
+  if (bytes < (1 << 20) || std::thread::hardware_concurrency() < 2) return;
   std::vector<std::pair<char*, std::uintmax_t>> blocks;
   for (std::uintmax_t done = 0; done < bytes; done += kBlock) {
     const std::uintmax_t size = std::min(kBlock, bytes - done);
