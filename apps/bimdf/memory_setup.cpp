@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +12,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "bimdf/io.hpp"
 
 namespace bimdf::cli {
 namespace {
@@ -96,8 +97,8 @@ HeapPrefault::HeapPrefault(std::uintmax_t bytes) {
   }
   for (const auto& block : blocks) std::free(block.first);
   if (blocks.empty()) return;
-  thread_ = std::thread([this, blocks] {
-    const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t page = page_size > 0 ? static_cast<std::uintptr_t>(page_size) : 4096;
+  thread_ = std::thread([this, blocks, page] {
     for (auto it = blocks.rbegin(); it != blocks.rend() && !stop_.load(); ++it) {
       const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(it->first);
       const std::uintptr_t begin = (start + page - 1) & ~(page - 1);
@@ -126,11 +127,13 @@ std::uintmax_t solve_heap_estimate(const std::string& path, bool exact) {
   std::error_code error;
   const std::uintmax_t size = std::filesystem::file_size(path, error);
   if (error) return 0;
+  // The reader's own format test, on the first 4 KiB (a file with more leading blanks than
+  // that counts as .bimdf text here: a larger estimate, nothing worse).
   std::ifstream in(path, std::ios::binary);
-  char c = ' ';
-  while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
-  }
-  const bool json = in && c == '{';
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  const bool json = detect_problem_format(head) == ProblemFormat::Json;
   const std::uintmax_t ratio = json ? (exact ? 10 : 8) : (exact ? 26 : 20);
   return size * ratio;
 }
