@@ -97,6 +97,8 @@ Throughflow refinement_throughflow(const BiMcf& bimcf, std::span<const int> min_
     if (arcs[v] >= kHubArcs) {
       tf.limit[v] = std::min(2 * (arcs[v] / kArcsPerThroughflowPair), kMaxThroughflow);
       tf.part_degree[v] = kTierPartDegree;
+    } else if (arcs[v] >= kBusyArcs) {
+      tf.limit[v] = kBusyThroughflow;
     }
     if (min_throughflow.empty()) continue;
     tf.limit[v] = std::max(tf.limit[v], min_throughflow[v]);

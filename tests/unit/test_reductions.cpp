@@ -433,8 +433,8 @@ TEST(Reductions, TieredBMatchingIsTheCheapestCirculationWithinEachPartsLimit) {
   EXPECT_GT(tiered_used, testing::scaled(600) / 10);
 }
 
-// Refinement's throughflow limits: 2 at ordinary nodes, more at hubs (in tiers), at most
-// kMaxThroughflow.
+// Refinement's throughflow limits: 2 at ordinary nodes, kBusyThroughflow from kBusyArcs arcs,
+// more at hubs (in tiers), at most kMaxThroughflow.
 TEST(Reductions, HubsGetLargerThroughflowLimits) {
   detail::BiMcf c;
   c.demand.assign(4, 0);
@@ -446,17 +446,25 @@ TEST(Reductions, HubsGetLargerThroughflowLimits) {
       c.cost.push_back(1);
     }
   };
+  static_assert(detail::kBusyArcs == 24 && detail::kHubArcs == 128);
   arcs(0, 1, 127);  // node 0: 127 arcs, node 1: 127 + 10
   arcs(1, 2, 10);   // node 2: 10 + 9000
   arcs(2, 3, 9000);
   const detail::Throughflow tf = detail::refinement_throughflow(c);
-  const int pd = detail::kTierPartDegree;
-  EXPECT_EQ(tf.limit, (std::vector<int>{2, 8, detail::kMaxThroughflow, detail::kMaxThroughflow}));
+  const int pd = detail::kTierPartDegree, busy = detail::kBusyThroughflow;
+  EXPECT_EQ(tf.limit,
+            (std::vector<int>{busy, 8, detail::kMaxThroughflow, detail::kMaxThroughflow}));
   EXPECT_EQ(tf.part_degree, (std::vector<int>{0, pd, pd, pd}));
+  // The first 137 arcs only: nodes 2 and 3 are ordinary (10 and 0 arcs).
   c.end_a.resize(137), c.end_b.resize(137), c.capacity.resize(137), c.cost.resize(137);
   const detail::Throughflow fewer = detail::refinement_throughflow(c);
-  EXPECT_EQ(fewer.limit, (std::vector<int>{2, 8, 2, 2}));
+  EXPECT_EQ(fewer.limit, (std::vector<int>{busy, 8, 2, 2}));
   EXPECT_EQ(fewer.part_degree, (std::vector<int>{0, pd, 0, 0}));
+  arcs(3, 0, 24);  // node 3: 24 arcs (busy), node 0: 151 (hub)
+  arcs(2, 1, 13);  // node 2: 23 (still ordinary), node 1: 150
+  const detail::Throughflow more = detail::refinement_throughflow(c);
+  EXPECT_EQ(more.limit, (std::vector<int>{8, 8, 2, busy}));
+  EXPECT_EQ(more.part_degree, (std::vector<int>{pd, pd, 0, 0}));
 }
 
 // Phase 1 (the approximation's last resort) with exact refinement: the artificial flow goes to
