@@ -86,8 +86,8 @@ int64_t matching_copies_bound(int limit, int part_degree);
 // instances the approximation's distance to the optimum needs throughflow 3–4 at a few nodes
 // of degree 9–18 (bull__flow_1: one, cow__flow_0: four), so K = 2 there left the optimum
 // outside round 1 and took an extra round: 200 → 187 rounds over the 63 instances (K = 3
-// from 16 arcs: 182, but larger matchings), the exact solves 2.8–5.4% faster in four
-// alternating runs; the generated 10^5-edge instance unchanged (docs/benchmarks.md).
+// from 16 arcs: 182, but larger matchings), the exact solves 1–5% faster in five alternating
+// runs (median 3.4%); the generated 10^5-edge instance unchanged (docs/benchmarks.md).
 inline constexpr int kBusyArcs = 24;
 inline constexpr int kBusyThroughflow = 4;
 inline constexpr int kHubArcs = 128;
