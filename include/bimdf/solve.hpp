@@ -95,15 +95,15 @@ class SolverError : public std::runtime_error {
 };
 
 // The exact solver (paper §3.7–3.9): the approximation above, then iterative refinement — each
-// round a minimum-cost circulation of throughflow at most 2 around the current flow, found as a
-// maximum-weight perfect matching (our blossom solver) on the arcs that the round's LP relaxation
-// cannot exclude — until a round no longer lowers the objective, which proves optimality (paper
-// Thm 3.8). Two kinds of component skip both and go to the algorithm they deserve (the
-// statistic "approximation_path", shown by `bimdf solve -v`, names them): one whose nodes can
-// be signed so that every edge has a head and a tail after negating the negative nodes' rows
-// (a 2-colourable sign graph, no loops; outer edges are arcs to and from the outside) is a
-// directed min-cost flow — network simplex, on windows of unit arcs around curved costs'
-// minima; one whose edges all join two nodes with two
+// round a minimum-cost circulation of throughflow at most 2 around the current flow (more at
+// nodes with many arcs, which only widens the search), found as a maximum-weight perfect
+// matching (our blossom solver) on the arcs that the round's LP relaxation cannot exclude — until a
+// round no longer lowers the objective, which proves optimality (paper Thm 3.8). Two kinds of
+// component skip both and go to the algorithm they deserve (the statistic "approximation_path",
+// shown by `bimdf solve -v`, names them): one whose nodes can be signed so that every edge has a
+// head and a tail after negating the negative nodes' rows (a 2-colourable sign graph, no loops;
+// outer edges are arcs to and from the outside) is a directed min-cost flow — network simplex, on
+// windows of unit arcs around curved costs' minima; one whose edges all join two nodes with two
 // heads (or all with two tails), bounds [0, 1], every demand 1 (or −1), is a perfect matching —
 // LEMON's blossom algorithm (src/solve/special_structure.hpp). Components are solved independently,
 // on `threads` workers; the flow does not depend on the thread count. When a limit stops refinement
