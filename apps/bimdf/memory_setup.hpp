@@ -51,7 +51,10 @@ class HeapPrefault {
 // file's size times the smallest ratio of peak memory to file size measured on the larger
 // shared instances — .bimdf text: 20 for the approximation, 26 for the exact solve (bull's exact
 // peak is 35 times its file, but above 26 the pre-faulted blocks raised it); JSON, 2.5 times
-// larger per edge: 8 and 10 — so that pre-faulting it does not raise the peak.
+// larger per edge: 8 and 10 — so that pre-faulting it does not raise the peak. Those files have
+// one comment line; for .bimdf text the size is first scaled by the share of its first 64 KiB
+// that lies outside '#' comments, so that a file of mostly comments is not taken for a large
+// problem.
 std::uintmax_t solve_heap_estimate(const std::string& path, bool exact);
 
 }  // namespace bimdf::cli

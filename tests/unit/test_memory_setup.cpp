@@ -105,11 +105,23 @@ TEST(HeapPrefault, EstimateScalesTheFileSizeByFormatAndMode) {
   std::ofstream(json) << "  \n{\"format\": \"bimdf-problem\", \"version\": 1}\n";
   const std::uintmax_t text_size = std::filesystem::file_size(text);
   const std::uintmax_t json_size = std::filesystem::file_size(json);
-  EXPECT_EQ(solve_heap_estimate(text, false), 20 * text_size);
-  EXPECT_EQ(solve_heap_estimate(text, true), 26 * text_size);
+  // The first line, 24 bytes with its newline, is a comment: 20 × (size − 24).
+  ASSERT_EQ(text_size, 30u);
+  EXPECT_EQ(solve_heap_estimate(text, false), 20 * 6u);
+  EXPECT_EQ(solve_heap_estimate(text, true), 26 * 6u);
   EXPECT_EQ(solve_heap_estimate(json, false), 8 * json_size);
   EXPECT_EQ(solve_heap_estimate(json, true), 10 * json_size);
   EXPECT_EQ(solve_heap_estimate((dir / "missing.bimdf").string(), true), 0u);
+  // A file of comments beyond the sample: only the sample's share of data counts, 1 byte in 4.
+  const std::string commented = (dir / "c.bimdf").string();
+  {
+    std::ofstream out(commented);
+    for (int i = 0; i < 30000; ++i) out << "0\n#cccc\n";
+  }
+  EXPECT_EQ(std::filesystem::file_size(commented), 240000u);
+  EXPECT_EQ(solve_heap_estimate(commented, true), 26u * 240000u / 4);
+  std::ofstream(text) << "";
+  EXPECT_EQ(solve_heap_estimate(text, true), 0u);
   std::filesystem::remove_all(dir);
 }
 
