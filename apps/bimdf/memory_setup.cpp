@@ -25,8 +25,9 @@ namespace {
 // (375 KB) 5–15% faster with them.
 constexpr std::uintmax_t kSmallInput = 256 << 10;
 
-// How much of a .bimdf file solve_heap_estimate reads to tell data from comments: 64 KiB is
-// ~1,000 edges of a QuadWild file, and reading it from the page cache costs microseconds.
+// How much of a file solve_heap_estimate reads to tell its format and, in .bimdf text, data
+// from comments: 64 KiB is ~1,000 edges of a QuadWild file, and reading it from the page cache
+// costs microseconds.
 constexpr std::size_t kEstimateSample = 64 << 10;
 
 // Whether the command line names at least one file and all of them are small.
@@ -131,15 +132,14 @@ std::uintmax_t solve_heap_estimate(const std::string& path, bool exact) {
   std::error_code error;
   const std::uintmax_t size = std::filesystem::file_size(path, error);
   if (error) return 0;
-  // The reader's own format test, on the first 4 KiB (a file with more leading blanks than
-  // that counts as .bimdf text here: a larger estimate, nothing worse).
+  // The reader's own format test, on the sample (a file with more leading blanks than that
+  // counts as .bimdf text here: a larger estimate, nothing worse).
   std::ifstream in(path, std::ios::binary);
   std::string head(kEstimateSample, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
   if (head.empty()) return 0;
-  const bool json =
-      detect_problem_format(std::string_view(head).substr(0, 4096)) == ProblemFormat::Json;
+  const bool json = detect_problem_format(head) == ProblemFormat::Json;
   const std::uintmax_t ratio = json ? (exact ? 10 : 8) : (exact ? 26 : 20);
   if (json) return size * ratio;
   // The ratios were measured on files whose only comment is the first line. '#' comments may
