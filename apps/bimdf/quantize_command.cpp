@@ -17,7 +17,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string number(double v) {
+std::string precise_number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", v);
   return buf;
@@ -46,7 +46,8 @@ json energies_json(const quant::Energies& e) {
 
 json stats_json(const Solution& s) {
   json j = json::object();
-  for (const auto& [key, value] : s.stats) std::visit([&](const auto& v) { j[key] = v; }, value);
+  for (const auto& entry : s.stats)  // not a structured binding: clang 14 cannot capture one
+    std::visit([&](const auto& v) { j[entry.first] = v; }, entry.second);
   return j;
 }
 
@@ -200,12 +201,12 @@ QuantizationReport report_quantization(const quant::Layout& layout, const quant:
   t << "layout        " << o.layout << ": " << charts << " charts (" << valence_counts(layout)
     << "), " << layout.subsides.size() << " subsides, " << layout.mesh.num_faces()
     << " triangles\n";
-  t << "edge length   " << number(q.edge_length) << "\n";
+  t << "edge length   " << precise_number(q.edge_length) << "\n";
   t << "status        " << status_name(last.solution.status) << "\n";
-  t << "objective     " << number(last.solution.objective)
+  t << "objective     " << precise_number(last.solution.objective)
     << (q.rounds.size() > 1 ? " (round 2 of 2)" : "") << "\n";
-  t << "energies      isometry " << number(e.isometry) << ", regularity " << number(e.regularity)
-    << ", alignment " << number(e.alignment) << "\n";
+  t << "energies      isometry " << precise_number(e.isometry) << ", regularity "
+    << precise_number(e.regularity) << ", alignment " << precise_number(e.alignment) << "\n";
   t << "charts        " << e.regular_charts << " of " << e.charts << " regular; about "
     << std::llround(last.estimated_quads) << " quads\n";
   if (o.quantize.align)
@@ -220,7 +221,7 @@ QuantizationReport report_quantization(const quant::Layout& layout, const quant:
     for (size_t r = 0; r < q.rounds.size(); ++r)
       t << "round " << r + 1 << "       " << q.rounds[r].model.problem.num_nodes() << " nodes, "
         << q.rounds[r].model.problem.num_edges() << " edges, " << q.rounds[r].pairs.size()
-        << " pairs; objective " << number(q.rounds[r].solution.objective) << "; model "
+        << " pairs; objective " << precise_number(q.rounds[r].solution.objective) << "; model "
         << ms(q.rounds[r].time_model_s) << ", solve " << ms(q.rounds[r].time_solve_s) << "\n";
   return {j, t.str()};
 }

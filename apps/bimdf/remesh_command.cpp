@@ -132,7 +132,7 @@ std::string valence_list(const std::map<int, int>& counts) {
   return text.empty() ? "none" : text;
 }
 
-std::string number(double v) {
+std::string short_number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", v);
   return buf;
@@ -197,14 +197,15 @@ TessellationReport report_metrics(const QuadMeshMetrics& m) {
   s << "singularities " << m.singular_vertices() << ": inside "
     << valence_list(m.interior_singularities) << "; on the boundary "
     << valence_list(m.boundary_singularities) << "\n";
-  s << "scaled Jac.   min " << number(m.scaled_jacobian_min) << ", mean "
-    << number(m.scaled_jacobian_mean) << ", 5th percentile " << number(m.scaled_jacobian_p5) << "; "
-    << m.inverted << " inverted, " << m.degenerate << " degenerate\n";
+  s << "scaled Jac.   min " << short_number(m.scaled_jacobian_min) << ", mean "
+    << short_number(m.scaled_jacobian_mean) << ", 5th percentile "
+    << short_number(m.scaled_jacobian_p5) << "; " << m.inverted << " inverted, " << m.degenerate
+    << " degenerate\n";
   s << "base complex  " << m.base_complex_faces << " patches\n";
   if (m.hausdorff >= 0)
-    s << "distance      Hausdorff " << number(m.hausdorff) << " ("
-      << number(100 * m.hausdorff_relative) << "% of the bounding-box diagonal); " << m.flipped
-      << " faces facing away from the surface\n";
+    s << "distance      Hausdorff " << short_number(m.hausdorff) << " ("
+      << short_number(100 * m.hausdorff_relative) << "% of the bounding-box diagonal); "
+      << m.flipped << " faces facing away from the surface\n";
   r.text = s.str();
   return r;
 }

@@ -40,14 +40,14 @@ constexpr int kNewtonSteps = 5;
 
 // Points around `at` in the tangent plane `frame`: 8 directions, 4 distances relative to
 // `length`.
-std::vector<detail::Vec3> tangent_probes(const std::array<detail::Vec3, 2>& frame,
-                                         const detail::Vec3& at, double length) {
+std::vector<bimdf::detail::Vec3> tangent_probes(const std::array<bimdf::detail::Vec3, 2>& frame,
+                                                const bimdf::detail::Vec3& at, double length) {
   const auto& [t1, t2] = frame;
-  std::vector<detail::Vec3> probes;
+  std::vector<bimdf::detail::Vec3> probes;
   for (double step : {0.6, 0.3, 0.1, 0.03})
     for (int k = 0; k < 8; ++k) {
       const double c = std::cos(k * std::numbers::pi / 4), s = std::sin(k * std::numbers::pi / 4);
-      detail::Vec3 p;
+      bimdf::detail::Vec3 p;
       for (int d = 0; d < 3; ++d) p[d] = at[d] + step * length * (c * t1[d] + s * t2[d]);
       probes.push_back(p);
     }
@@ -55,9 +55,10 @@ std::vector<detail::Vec3> tangent_probes(const std::array<detail::Vec3, 2>& fram
 }
 
 // The point of a mesh polyline closest to p (face −1) and its distance (−1: no segment).
-detail::TriangleTree::Hit closest_on_polyline(const Layout& layout, const std::vector<int>& chain,
-                                              const std::array<double, 3>& p) {
-  detail::TriangleTree::Hit best;
+bimdf::detail::TriangleTree::Hit closest_on_polyline(const Layout& layout,
+                                                     const std::vector<int>& chain,
+                                                     const std::array<double, 3>& p) {
+  bimdf::detail::TriangleTree::Hit best;
   best.distance = -1;
   for (size_t i = 0; i + 1 < chain.size(); ++i) {
     const auto& a = layout.mesh.vertices[chain[i]];
@@ -126,10 +127,11 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   const std::vector<std::vector<int>>& neighbours = s.neighbours;
   const std::vector<std::vector<int>>& vertex_quads = s.vertex_quads;
   // Each chart's triangles for closest points, built on first use and kept for later runs.
-  const auto tree = [&](int c) -> const detail::TriangleTree* {
+  const auto tree = [&](int c) -> const bimdf::detail::TriangleTree* {
     if (c < 0 || layout.charts[c].empty()) return nullptr;
     if (!s.trees[c])
-      s.trees[c] = std::make_unique<detail::TriangleTree>(layout.mesh, layout.charts[c].faces);
+      s.trees[c] =
+          std::make_unique<bimdf::detail::TriangleTree>(layout.mesh, layout.charts[c].faces);
     return s.trees[c].get();
   };
   std::vector<int> active;
@@ -157,24 +159,24 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   // surface's that a fine quad measures as turned over against it.
   if (s.corner_normals.empty())
     s.corner_normals = chart_corner_normals(layout.mesh, layout.face_chart);
-  const auto surface_normal = [&](const detail::TriangleTree::Hit& hit) {
+  const auto surface_normal = [&](const bimdf::detail::TriangleTree::Hit& hit) {
     const auto& tri = layout.mesh.faces[hit.face];
-    const detail::Vec3 w =
-        detail::barycentric_coordinates(hit.point, layout.mesh.vertices[tri[0]],
-                                        layout.mesh.vertices[tri[1]], layout.mesh.vertices[tri[2]]);
-    detail::Vec3 n{0, 0, 0};
+    const bimdf::detail::Vec3 w = bimdf::detail::barycentric_coordinates(
+        hit.point, layout.mesh.vertices[tri[0]], layout.mesh.vertices[tri[1]],
+        layout.mesh.vertices[tri[2]]);
+    bimdf::detail::Vec3 n{0, 0, 0};
     for (int k = 0; k < 3; ++k)
       for (int d = 0; d < 3; ++d)
-        n[d] += w[k] * detail::normalized(s.corner_normals[hit.face][k])[d];
-    return detail::norm(n) > 0 ? n : detail::triangle_normal(layout.mesh, hit.face);
+        n[d] += w[k] * bimdf::detail::normalized(s.corner_normals[hit.face][k])[d];
+    return bimdf::detail::norm(n) > 0 ? n : bimdf::detail::triangle_normal(layout.mesh, hit.face);
   };
   std::vector<std::array<double, 3>> up(mesh.num_quads());
   for (int f : active_quads) {
-    const std::array<double, 3> centre = detail::quad_centre(mesh, mesh.quads[f]);
+    const std::array<double, 3> centre = bimdf::detail::quad_centre(mesh, mesh.quads[f]);
     const int c = f < static_cast<int>(mesh.quad_patch.size()) ? mesh.quad_patch[f] : -1;
-    const detail::TriangleTree* under = tree(c);
-    up[f] = detail::normalized(under ? surface_normal(under->closest(centre))
-                                     : detail::newell_normal(mesh, mesh.quads[f]));
+    const bimdf::detail::TriangleTree* under = tree(c);
+    up[f] = bimdf::detail::normalized(under ? surface_normal(under->closest(centre))
+                                            : bimdf::detail::newell_normal(mesh, mesh.quads[f]));
   }
   // How the quads at v rate, in one pass over them (every candidate position is rated):
   //  * quality: the worst scaled Jacobian among them, against the surface's normal and against
@@ -201,7 +203,7 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     Rating r;
     for (int f : vertex_quads[v]) {
       const std::array<int, 4>& q = mesh.quads[f];
-      const auto [own, under, spread] = detail::quad_shape(mesh, q, up[f]);
+      const auto [own, under, spread] = bimdf::detail::quad_shape(mesh, q, up[f]);
       if (spread < kShortEdge) r.quality = std::min(r.quality, spread / kShortEdge - 1);
       r.turned += own < 0 || under < 0;
       r.turned_amount += std::max(0.0, -std::min(own, under));
@@ -217,13 +219,13 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   };
   // p back on the surface: on v's curve, or on its charts' triangles.
   const auto project = [&](int v, const std::array<double, 3>& p) {
-    detail::TriangleTree::Hit best;
+    bimdf::detail::TriangleTree::Hit best;
     best.distance = -1;
     if (curve[v] >= 0) best = closest_on_polyline(layout, curve_polylines[curve[v]], p);
     for (int c : charts[v]) {
-      const detail::TriangleTree* on = tree(c);
+      const bimdf::detail::TriangleTree* on = tree(c);
       if (!on) continue;
-      const detail::TriangleTree::Hit hit = on->closest(p);
+      const bimdf::detail::TriangleTree::Hit hit = on->closest(p);
       if (best.distance < 0 || hit.distance < best.distance) best = hit;
     }
     return best.distance >= 0 ? best.point : p;
@@ -233,14 +235,14 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   // its tangent plane, and the exact best position for its quads' corner areas and half-way
   // there.
   const auto search_positions = [&](int v) {
-    std::vector<detail::Vec3> positions;
-    const auto frame = detail::tangent_frame(mesh, vertex_quads[v]);
-    const detail::Vec3 at = mesh.vertices[v];
-    const double length = detail::mean_distance(mesh, neighbours[v], at);
+    std::vector<bimdf::detail::Vec3> positions;
+    const auto frame = bimdf::detail::tangent_frame(mesh, vertex_quads[v]);
+    const bimdf::detail::Vec3 at = mesh.vertices[v];
+    const double length = bimdf::detail::mean_distance(mesh, neighbours[v], at);
     if (!frame || length == 0) return positions;
     positions = tangent_probes(*frame, at, length);
-    if (const auto p = detail::max_min_corner_position(mesh, v, vertex_quads[v], up, (*frame)[0],
-                                                       (*frame)[1], length)) {
+    if (const auto p = bimdf::detail::max_min_corner_position(mesh, v, vertex_quads[v], up,
+                                                              (*frame)[0], (*frame)[1], length)) {
       positions.push_back(*p);
       positions.push_back({(p->at(0) + at[0]) / 2, (p->at(1) + at[1]) / 2, (p->at(2) + at[2]) / 2});
     }
@@ -279,7 +281,7 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       if (r.quality > chosen_quality && may_turn(start, r)) chosen_quality = r.quality, chosen = p;
     };
     if (before < kBad)
-      for (const detail::Vec3& p : search_positions(v)) consider(project(v, p));
+      for (const bimdf::detail::Vec3& p : search_positions(v)) consider(project(v, p));
     for (double damping : {options.damping, 1.0, 0.25}) {
       consider(candidate(damping));
       if (before >= kGoodEnough) break;
@@ -287,7 +289,7 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     mesh.vertices[v] = chosen_quality >= std::min(before, kGoodEnough) ? chosen : old;
   };
   if (phase == Phase::kTangledRegions) {
-    using Freedom = detail::TangledRegionInput::Freedom;
+    using Freedom = bimdf::detail::TangledRegionInput::Freedom;
     const auto freedom = [&](int v) {
       if (!movable(v)) return Freedom::kPinned;
       if (curve[v] >= 0) return Freedom::kOnCurve;
@@ -297,25 +299,25 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
       run(options, &vertices, Phase::kRelaxAndUntangle);
     };
     const auto quality = [&](int f) {
-      const auto [own, under, spread] = detail::quad_shape(mesh, mesh.quads[f], up[f]);
+      const auto [own, under, spread] = bimdf::detail::quad_shape(mesh, mesh.quads[f], up[f]);
       return std::array<double, 2>{own, under};
     };
     const auto normal_under = [&](int f) { return up[f]; };
-    const detail::TangledRegionInput input{
+    const bimdf::detail::TangledRegionInput input{
         {mesh, vertex_quads, neighbours, project}, freedom, quality, normal_under, smooth, placed};
-    detail::reembed_tangled_regions(input, active);
+    bimdf::detail::reembed_tangled_regions(input, active);
     return;
   }
   if (phase == Phase::kPolish) {
-    if (!s.surface) s.surface = std::make_unique<detail::TriangleTree>(layout.mesh);
+    if (!s.surface) s.surface = std::make_unique<bimdf::detail::TriangleTree>(layout.mesh);
     const auto rating = [&](int v) {
       const Rating r = rate(v);
-      return detail::PolishInput::Rating{r.quality, r.own_worst, r.turned};
+      return bimdf::detail::PolishInput::Rating{r.quality, r.own_worst, r.turned};
     };
     const auto on_curve = [&](int v) { return curve[v] >= 0; };
-    const detail::PolishInput polish{
+    const bimdf::detail::PolishInput polish{
         {mesh, vertex_quads, neighbours, project}, *s.surface, movable, on_curve, rating};
-    detail::polish_quality(polish, active, options.quality_rounds);
+    bimdf::detail::polish_quality(polish, active, options.quality_rounds);
     return;
   }
 
@@ -327,7 +329,7 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
   // max-min quality above, the sum lets a vertex give up some quality of one quad to make
   // room for a neighbour, which frees clusters of vertices that block each other.
   const auto inverted = [&](int f) {
-    const auto [own, under, spread] = detail::quad_shape(mesh, mesh.quads[f], up[f]);
+    const auto [own, under, spread] = bimdf::detail::quad_shape(mesh, mesh.quads[f], up[f]);
     return spread < kShortEdge || own < 0 || under < 0;
   };
   const auto inverted_at = [&](int v) {
@@ -339,9 +341,10 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     double sum = 0;
     for (int f : vertex_quads[v]) {
       const std::array<int, 4>& q = mesh.quads[f];
-      const detail::Vec3 own = detail::normalized(detail::newell_normal(mesh, q));
-      sum += detail::untangling_energy(mesh, q, up[f], kUntangleDelta) +
-             detail::untangling_energy(mesh, q, own, kUntangleDelta);
+      const bimdf::detail::Vec3 own =
+          bimdf::detail::normalized(bimdf::detail::newell_normal(mesh, q));
+      sum += bimdf::detail::untangling_energy(mesh, q, up[f], kUntangleDelta) +
+             bimdf::detail::untangling_energy(mesh, q, own, kUntangleDelta);
     }
     return sum;
   };
@@ -357,30 +360,30 @@ void SurfaceSmoother::run(const SmoothingOptions& options, const std::vector<int
     if (region.empty()) break;
     for (int v : region) {
       if (!is_active[v] || !movable(v)) continue;
-      const detail::Vec3 old = mesh.vertices[v];
-      detail::Vec3 chosen = old;
+      const bimdf::detail::Vec3 old = mesh.vertices[v];
+      bimdf::detail::Vec3 chosen = old;
       double lowest = energy(v);
       const int tangled = inverted_at(v);
       const Rating start = rate(v);
       // The energy at p, +∞ where v would tangle more quads, make corners coincide or turn
       // more quads over than may_turn allows (trading a sliver for a turned quad keeps the
       // count of tangled ones).
-      const auto allowed_energy = [&](const detail::Vec3& p) {
+      const auto allowed_energy = [&](const bimdf::detail::Vec3& p) {
         mesh.vertices[v] = project(v, p);
         return inverted_at(v) <= tangled && may_turn(start, rate(v))
                    ? energy(v)
                    : std::numeric_limits<double>::infinity();
       };
-      for (const detail::Vec3& p : search_positions(v)) {
+      for (const bimdf::detail::Vec3& p : search_positions(v)) {
         const double e = allowed_energy(p);
         if (e < lowest) lowest = e, chosen = mesh.vertices[v];
       }
       // From the best sample, Newton steps on the energy.
       mesh.vertices[v] = chosen;
-      if (const auto frame = detail::tangent_frame(mesh, vertex_quads[v])) {
-        const detail::Vec3 p = detail::descend_in_tangent_plane(
+      if (const auto frame = bimdf::detail::tangent_frame(mesh, vertex_quads[v])) {
+        const bimdf::detail::Vec3 p = bimdf::detail::descend_in_tangent_plane(
             allowed_energy, chosen, (*frame)[0], (*frame)[1],
-            detail::mean_distance(mesh, neighbours[v], chosen), kNewtonSteps);
+            bimdf::detail::mean_distance(mesh, neighbours[v], chosen), kNewtonSteps);
         const double e = allowed_energy(p);
         if (e < lowest) lowest = e, chosen = mesh.vertices[v];
       }

@@ -29,17 +29,17 @@ struct SurfaceSmoother::Setup {
   std::vector<std::vector<std::array<int, 3>>> corners;  // (next, opposite, previous)
   std::vector<std::vector<int>> neighbours;
   std::vector<std::vector<int>> vertex_quads;
-  std::vector<std::unique_ptr<detail::TriangleTree>> trees;  // per chart, built on first use
-  std::unique_ptr<detail::TriangleTree> surface;  // all of layout.mesh, built on first use
+  std::vector<std::unique_ptr<bimdf::detail::TriangleTree>> trees;  // per chart, built on first use
+  std::unique_ptr<bimdf::detail::TriangleTree> surface;  // all of layout.mesh, built on first use
   // Per triangle corner of layout.mesh: the area-weighted normal of the triangles of the same
   // chart at that vertex, built on first use (see surface_normal).
-  std::vector<std::array<detail::Vec3, 3>> corner_normals;
+  std::vector<std::array<bimdf::detail::Vec3, 3>> corner_normals;
 };
 
 // Per corner of each triangle of `mesh`: the sum of the (area-weighted) normals of the
 // triangles of the same chart at that corner's vertex. Charts meet at features and borders,
 // where the normal must not be blended across the crease.
-std::vector<std::array<detail::Vec3, 3>> chart_corner_normals(const TriangleMesh& mesh,
-                                                              const std::vector<int>& face_chart);
+std::vector<std::array<bimdf::detail::Vec3, 3>> chart_corner_normals(
+    const TriangleMesh& mesh, const std::vector<int>& face_chart);
 
 }  // namespace bimdf::quant
