@@ -13,8 +13,11 @@ double random_double(std::mt19937_64& rng) {
       return static_cast<double>(rng() % 11) / 2.0;
     case 1:
       return std::uniform_real_distribution<double>(0.0, 10.0)(rng);
-    default:
-      return std::ldexp(std::uniform_real_distribution<double>(0.5, 1.0)(rng), -int(rng() % 30));
+    default: {
+      // Exponent first: see random_cost on the order of draws.
+      const int exponent = -static_cast<int>(rng() % 30);
+      return std::ldexp(std::uniform_real_distribution<double>(0.5, 1.0)(rng), exponent);
+    }
   }
 }
 
@@ -31,16 +34,25 @@ Cost random_cost(std::mt19937_64& rng, const RandomProblemOptions& o, int64_t lo
       case 0:
         c = Cost::zero(ext ? static_cast<int64_t>(rng() % 7) - 2 : 0);
         break;
-      case 1:
-        c = Cost::abs_deviation(random_double(rng), random_double(rng));
+      // Parameters are drawn into locals, last first: the order gcc evaluated them in as call
+      // arguments, whose order is the compiler's. So every compiler draws the same problems.
+      case 1: {
+        const double weight = random_double(rng), target = random_double(rng);
+        c = Cost::abs_deviation(target, weight);
         break;
-      case 2:
-        c = Cost::quad_deviation(random_double(rng), random_double(rng));
+      }
+      case 2: {
+        const double weight = random_double(rng), target = random_double(rng);
+        c = Cost::quad_deviation(target, weight);
         break;
-      case 3:
+      }
+      case 3: {
         if (!scale_ok) continue;
-        c = Cost::scale_factor(random_double(rng), random_double(rng), 0.1 + random_double(rng));
+        const double eps = 0.1 + random_double(rng), weight = random_double(rng),
+                     target = random_double(rng);
+        c = Cost::scale_factor(target, weight, eps);
         break;
+      }
       case 4: {
         if (depth > 1) continue;
         std::vector<Cost> terms;
@@ -52,9 +64,12 @@ Cost random_cost(std::mt19937_64& rng, const RandomProblemOptions& o, int64_t lo
       case 5:
         c = Cost::linear(random_double(rng) - 5.0);
         break;
-      case 6:
-        c = Cost::asym_abs_deviation(random_double(rng), random_double(rng), random_double(rng));
+      case 6: {
+        const double above = random_double(rng), below = random_double(rng),
+                     target = random_double(rng);
+        c = Cost::asym_abs_deviation(target, below, above);
         break;
+      }
       default: {
         // Convex: increasing slopes.
         std::vector<double> values{random_double(rng)};

@@ -129,15 +129,23 @@ TEST(Cost, ArgminFarFromTheAnchorOverWideBounds) {
     std::vector<Cost> terms;
     const int k = 1 + static_cast<int>(rng() % 4);
     for (int j = 0; j < k; ++j) {
+      // Parameters drawn into locals, last first (gcc's order of evaluating call arguments,
+      // which is the compiler's choice): the same costs under every compiler.
       switch (rng() % 3) {
-        case 0:
-          terms.push_back(Cost::abs_deviation(target(rng), weight(rng)));
+        case 0: {
+          const double w = weight(rng), x = target(rng);
+          terms.push_back(Cost::abs_deviation(x, w));
           break;
-        case 1:
-          terms.push_back(Cost::quad_deviation(target(rng), weight(rng)));
+        }
+        case 1: {
+          const double w = weight(rng), x = target(rng);
+          terms.push_back(Cost::quad_deviation(x, w));
           break;
-        default:
-          terms.push_back(Cost::asym_abs_deviation(target(rng), weight(rng), weight(rng)));
+        }
+        default: {
+          const double above = weight(rng), below = weight(rng), x = target(rng);
+          terms.push_back(Cost::asym_abs_deviation(x, below, above));
+        }
       }
     }
     const Cost c = k == 1 ? terms[0] : Cost::sum(terms);

@@ -195,8 +195,12 @@ TEST(Exact, HubThroughflowReachesTheSameOptimum) {
       const int64_t up = 4 + static_cast<int64_t>(rng() % 8);
       const double target = static_cast<double>(rng() % up);
       const double weight = 0.1 + static_cast<double>(rng() % 10) / 10;
+      // Drawn before the call, not as its arguments, whose order of evaluation is the
+      // compiler's (this is gcc's order): the same problems under every compiler.
+      const End to{static_cast<int>(rng() % n), rng() % 2 == 0};
+      const End from{hub, rng() % 2 == 0};
       p.add_edge(
-          End{hub, rng() % 2 == 0}, End{static_cast<int>(rng() % n), rng() % 2 == 0}, 0, up,
+          from, to, 0, up,
           k % 2 ? Cost::abs_deviation(target, weight) : Cost::quad_deviation(target, weight));
     }
     testing::plant_feasible_demands(p, rng);

@@ -50,7 +50,9 @@ Problem directed_network(std::mt19937_64& rng, int n, int m, const std::vector<c
     const int s = node(rng), t = node(rng);
     if (s == t) continue;
     const int64_t lo = k % 5 == 0 ? 1 : 0, up = lo + cap(rng);
-    arc(s, t, lo, up, cost(rng), std::uniform_int_distribution<int64_t>(lo, up)(rng));
+    // Drawn last first, as gcc evaluated them as arguments: the same network under any compiler.
+    const int64_t planted = std::uniform_int_distribution<int64_t>(lo, up)(rng);
+    arc(s, t, lo, up, cost(rng), planted);
   }
   for (int v = 0; v < n; ++v) p.demand[v] = negated[v] ? -net[v] : net[v];
   return p;
