@@ -91,7 +91,9 @@ void compare(const Problem& p, bool oracle_feasible, double oracle_objective,
 
 void report(const Tally& t, const std::string& name) {
   EXPECT_EQ(t.mismatches, 0) << t.first;
-  EXPECT_LE(t.oracle_short, t.instances / 100) << name;  // an occasional CBC tolerance miss only
+  // An occasional CBC tolerance miss only: up to 1% of the instances, rounded up, so that a
+  // scaled-down run (BIMDF_TEST_SCALE, e.g. 90 instances at 0.3) may still see one.
+  EXPECT_LE(t.oracle_short, (t.instances + 99) / 100) << name;
   EXPECT_GT(t.optimal, t.instances / 3) << name;
   EXPECT_GT(t.infeasible, t.instances / 50) << name;
   std::cout << "[ oracle   ] " << name << ": " << t.instances << " instances, " << t.optimal
