@@ -28,9 +28,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string ms(double seconds) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f ms", seconds * 1e3);
+std::string ms(double seconds, int decimals) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f ms", decimals, seconds * 1e3);
+  return buf;
+}
+
+std::string significant(double v, int significant_digits) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*g", significant_digits, v);
   return buf;
 }
 

@@ -22,9 +22,15 @@ void add_output_options(CLI::App* cmd, OutputOptions& out);
 void deliver(const OutputOptions& out, const std::string& human, const std::string& json_text,
              const std::vector<std::string>& inputs);
 
-// Seconds elapsed since `start`, and a duration as "12.3 ms" for the human summaries.
+// Seconds elapsed since `start`, and a duration in milliseconds for the human summaries:
+// "12.3 ms" by default, "12.345 ms" with decimals = 3 (solve's stage breakdown, where stages of
+// small instances take microseconds).
 double seconds_since(std::chrono::steady_clock::time_point start);
-std::string ms(double seconds);
+std::string ms(double seconds, int decimals = 1);
+
+// `v` rounded to `significant_digits` as printf's %g writes it (1.135, 0.0001234, 1.5e+07): the
+// human summaries' objectives (9 digits) and quality figures (4 digits).
+std::string significant(double v, int significant_digits);
 
 // The shortest decimal that reads back as exactly `x` (1.135, not 1.1350000000000000).
 std::string shortest_decimal(double x);

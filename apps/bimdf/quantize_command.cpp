@@ -17,12 +17,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string precise_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-
 std::string valence_counts(const quant::Layout& layout) {
   std::map<int, int> count;
   for (const quant::Chart& c : layout.charts)
@@ -201,12 +195,12 @@ QuantizationReport report_quantization(const quant::Layout& layout, const quant:
   t << "layout        " << o.layout << ": " << charts << " charts (" << valence_counts(layout)
     << "), " << layout.subsides.size() << " subsides, " << layout.mesh.num_faces()
     << " triangles\n";
-  t << "edge length   " << precise_number(q.edge_length) << "\n";
+  t << "edge length   " << significant(q.edge_length, 9) << "\n";
   t << "status        " << status_name(last.solution.status) << "\n";
-  t << "objective     " << precise_number(last.solution.objective)
+  t << "objective     " << significant(last.solution.objective, 9)
     << (q.rounds.size() > 1 ? " (round 2 of 2)" : "") << "\n";
-  t << "energies      isometry " << precise_number(e.isometry) << ", regularity "
-    << precise_number(e.regularity) << ", alignment " << precise_number(e.alignment) << "\n";
+  t << "energies      isometry " << significant(e.isometry, 9) << ", regularity "
+    << significant(e.regularity, 9) << ", alignment " << significant(e.alignment, 9) << "\n";
   t << "charts        " << e.regular_charts << " of " << e.charts << " regular; about "
     << std::llround(last.estimated_quads) << " quads\n";
   if (o.quantize.align)
@@ -221,7 +215,7 @@ QuantizationReport report_quantization(const quant::Layout& layout, const quant:
     for (size_t r = 0; r < q.rounds.size(); ++r)
       t << "round " << r + 1 << "       " << q.rounds[r].model.problem.num_nodes() << " nodes, "
         << q.rounds[r].model.problem.num_edges() << " edges, " << q.rounds[r].pairs.size()
-        << " pairs; objective " << precise_number(q.rounds[r].solution.objective) << "; model "
+        << " pairs; objective " << significant(q.rounds[r].solution.objective, 9) << "; model "
         << ms(q.rounds[r].time_model_s) << ", solve " << ms(q.rounds[r].time_solve_s) << "\n";
   return {j, t.str()};
 }

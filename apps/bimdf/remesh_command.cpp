@@ -132,12 +132,6 @@ std::string valence_list(const std::map<int, int>& counts) {
   return text.empty() ? "none" : text;
 }
 
-std::string short_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
-
 }  // namespace
 
 void add_smoothing_options(CLI::App* cmd, quant::SmoothingOptions& smoothing) {
@@ -197,14 +191,14 @@ TessellationReport report_metrics(const QuadMeshMetrics& m) {
   s << "singularities " << m.singular_vertices() << ": inside "
     << valence_list(m.interior_singularities) << "; on the boundary "
     << valence_list(m.boundary_singularities) << "\n";
-  s << "scaled Jac.   min " << short_number(m.scaled_jacobian_min) << ", mean "
-    << short_number(m.scaled_jacobian_mean) << ", 5th percentile "
-    << short_number(m.scaled_jacobian_p5) << "; " << m.inverted << " inverted, " << m.degenerate
+  s << "scaled Jac.   min " << significant(m.scaled_jacobian_min, 4) << ", mean "
+    << significant(m.scaled_jacobian_mean, 4) << ", 5th percentile "
+    << significant(m.scaled_jacobian_p5, 4) << "; " << m.inverted << " inverted, " << m.degenerate
     << " degenerate\n";
   s << "base complex  " << m.base_complex_faces << " patches\n";
   if (m.hausdorff >= 0)
-    s << "distance      Hausdorff " << short_number(m.hausdorff) << " ("
-      << short_number(100 * m.hausdorff_relative) << "% of the bounding-box diagonal); "
+    s << "distance      Hausdorff " << significant(m.hausdorff, 4) << " ("
+      << significant(100 * m.hausdorff_relative, 4) << "% of the bounding-box diagonal); "
       << m.flipped << " faces facing away from the surface\n";
   r.text = s.str();
   return r;

@@ -51,12 +51,6 @@ double peak_memory_mb() {
   return 0;
 }
 
-std::string ms_to_microseconds(double seconds) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f ms", seconds * 1e3);
-  return buf;
-}
-
 // One line per progress event, on stderr (stdout carries the result), e.g.
 //   progress 0.392 s: component 1 of 2: round 1, objective 27.443912861937058 (lowered)
 void print_progress(const SolveProgress& p) {
@@ -97,42 +91,40 @@ std::string human_report(const Solution& s, bool exact, bool verbose) {
       line("path", stat_text(s, "approximation_path"));
     }
   }
-  line("time", ms_to_microseconds(stat_seconds(s, "time_total_s")) + " (read " +
-                   ms_to_microseconds(stat_seconds(s, "time_read_s")) + ", solve " +
-                   ms_to_microseconds(stat_seconds(s, "time_solve_s")) + ")");
+  line("time", ms(stat_seconds(s, "time_total_s"), 3) + " (read " +
+                   ms(stat_seconds(s, "time_read_s"), 3) + ", solve " +
+                   ms(stat_seconds(s, "time_solve_s"), 3) + ")");
   if (s.status != SolveStatus::Infeasible) {
     const double approx_s = stat_seconds(s, "time_simplify_s") +
                             stat_seconds(s, "time_lp_guess_s") + stat_seconds(s, "time_parity_s") +
                             stat_seconds(s, "time_linearize_s") +
                             stat_seconds(s, "time_min_cost_flow_s");
-    std::string stages = "approximation " + ms_to_microseconds(approx_s);
+    std::string stages = "approximation " + ms(approx_s, 3);
     if (exact)
-      stages +=
-          ", refinement " +
-          ms_to_microseconds(stat_seconds(s, "time_refine_build_s") +
-                             stat_seconds(s, "time_pruning_s") +
-                             stat_seconds(s, "time_matching_s")) +
-          " (matching " + ms_to_microseconds(stat_seconds(s, "time_matching_s")) + ")" +
-          (s.status == SolveStatus::Optimal
-               ? ""
-               : ", lower bound " + ms_to_microseconds(stat_seconds(s, "time_lower_bound_s")));
+      stages += ", refinement " +
+                ms(stat_seconds(s, "time_refine_build_s") + stat_seconds(s, "time_pruning_s") +
+                       stat_seconds(s, "time_matching_s"),
+                   3) +
+                " (matching " + ms(stat_seconds(s, "time_matching_s"), 3) + ")" +
+                (s.status == SolveStatus::Optimal
+                     ? ""
+                     : ", lower bound " + ms(stat_seconds(s, "time_lower_bound_s"), 3));
     line("stages", stages);
   }
   if (verbose) {
     line("components", stat_text(s, "components") + " (" + stat_text(s, "threads") + " threads)");
     line("solved size", stat_text(s, "nodes_solved") + " nodes, " + stat_text(s, "edges_solved") +
                             " edges after simplification");
-    std::string stages = "simplify " + ms_to_microseconds(stat_seconds(s, "time_simplify_s")) +
-                         ", LP guess " + ms_to_microseconds(stat_seconds(s, "time_lp_guess_s")) +
-                         ", parity " + ms_to_microseconds(stat_seconds(s, "time_parity_s")) +
-                         ", linearize " + ms_to_microseconds(stat_seconds(s, "time_linearize_s")) +
-                         ", min-cost flow " +
-                         ms_to_microseconds(stat_seconds(s, "time_min_cost_flow_s"));
+    std::string stages = "simplify " + ms(stat_seconds(s, "time_simplify_s"), 3) + ", LP guess " +
+                         ms(stat_seconds(s, "time_lp_guess_s"), 3) + ", parity " +
+                         ms(stat_seconds(s, "time_parity_s"), 3) + ", linearize " +
+                         ms(stat_seconds(s, "time_linearize_s"), 3) + ", min-cost flow " +
+                         ms(stat_seconds(s, "time_min_cost_flow_s"), 3);
     if (exact)
-      stages += ", refinement build " + ms_to_microseconds(stat_seconds(s, "time_refine_build_s")) +
-                ", pruning LP " + ms_to_microseconds(stat_seconds(s, "time_pruning_s")) +
-                ", matching " + ms_to_microseconds(stat_seconds(s, "time_matching_s")) +
-                ", lower bound " + ms_to_microseconds(stat_seconds(s, "time_lower_bound_s"));
+      stages += ", refinement build " + ms(stat_seconds(s, "time_refine_build_s"), 3) +
+                ", pruning LP " + ms(stat_seconds(s, "time_pruning_s"), 3) + ", matching " +
+                ms(stat_seconds(s, "time_matching_s"), 3) + ", lower bound " +
+                ms(stat_seconds(s, "time_lower_bound_s"), 3);
     line("stage detail", stages + " (summed over components)");
     line("covers", stat_text(s, "double_covers_solved") + " solved, " + stat_text(s, "fallbacks") +
                        " components needed a fallback");
