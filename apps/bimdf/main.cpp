@@ -279,8 +279,21 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kOk : kBadInput;
+    // --help and --version arrive as "errors" of exit code 0; CLI11 prints them.
+    if (e.get_exit_code() == 0) return app.exit(e) == 0 ? kOk : kBadInput;
+    // Usage errors read like every other error of the program, and name the help that applies:
+    // the subcommand's, when one was chosen before the error.
+    std::string help = "bimdf", message = e.what();
+    if (const std::vector<CLI::App*> chosen = app.get_subcommands(); !chosen.empty()) {
+      help += " " + chosen.front()->get_name();
+    } else if (argc > 1) {
+      // CLI11 reports only "A subcommand is required" when the first word is none of them.
+      const std::string first = argv[1];
+      message = first.starts_with("-") ? "unknown option '" + first + "' (expected a subcommand)"
+                                       : "unknown subcommand '" + first + "'";
+    }
+    std::cerr << "error: " << message << "\nRun '" << help << " --help' for the options.\n";
+    return kBadInput;
   }
 
   try {

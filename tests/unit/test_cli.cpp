@@ -91,10 +91,26 @@ TEST_F(Cli, InvalidInputExitsTwoWithFileAndLine) {
 }
 
 TEST_F(Cli, UsageErrorsExitTwoHelpExitsZero) {
-  EXPECT_EQ(run("").exit_code, 2);
-  EXPECT_EQ(run("frobnicate").exit_code, 2);
-  EXPECT_EQ(run("info").exit_code, 2);
-  EXPECT_EQ(run("info --bogus " + kExample).exit_code, 2);
+  // Usage errors read like input errors and name the help of the subcommand they concern.
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"", "error: A subcommand is required\nRun 'bimdf --help' for the options.\n"},
+      {"frobnicate",
+       "error: unknown subcommand 'frobnicate'\nRun 'bimdf --help' for the options.\n"},
+      {"--bogus",
+       "error: unknown option '--bogus' (expected a subcommand)\nRun 'bimdf --help' for the "
+       "options.\n"},
+      {"info", "error: PROBLEM is required\nRun 'bimdf info --help' for the options.\n"},
+      {"info --bogus " + kExample,
+       "error: The following argument was not expected: --bogus\nRun 'bimdf info --help' for "
+       "the options.\n"},
+      {"remesh " + kExample,
+       "error: --output is required\nRun 'bimdf remesh --help' for the options.\n"},
+  };
+  for (const auto& [args, message] : refused) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.err, message) << args;
+  }
   const CliRun help = run("--help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.out.find("Exit codes: 0 success"), std::string::npos);

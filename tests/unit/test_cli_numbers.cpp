@@ -24,9 +24,13 @@ struct BadNumber {
 
 using NumericOptions = CliFixture;
 
+// `command` begins with the subcommand, whose help the message names.
 void expect_refused(const CliRun& r, const std::string& command, const std::string& message) {
+  const std::string subcommand = command.substr(0, command.find(' '));
   EXPECT_EQ(r.exit_code, 2) << command;
-  EXPECT_EQ(r.err, message + "\nRun with --help for more information.\n") << command;
+  EXPECT_EQ(r.err,
+            "error: " + message + "\nRun 'bimdf " + subcommand + " --help' for the options.\n")
+      << command;
 }
 
 TEST_F(NumericOptions, SolveRefusesMeaninglessNumbers) {
