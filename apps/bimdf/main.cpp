@@ -207,7 +207,9 @@ int run_generate(const std::string& family, int64_t size, uint64_t seed, const s
 
 int main(int argc, char** argv) {
   configure_process_memory(argv);
-  CLI::App app{"bimdf: exact minimum-deviation flows in bidirected graphs (Bi-MDF)"};
+  // Named, not taken from argv[0], so that usage lines read "Usage: bimdf solve …" however the
+  // program was invoked, as the usage errors' help hint does.
+  CLI::App app{"bimdf: exact minimum-deviation flows in bidirected graphs (Bi-MDF)", "bimdf"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("bimdf ") + BIMDF_VERSION);
   app.footer(

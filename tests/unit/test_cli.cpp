@@ -116,6 +116,9 @@ TEST_F(Cli, UsageErrorsExitTwoHelpExitsZero) {
   EXPECT_NE(help.out.find("Exit codes: 0 success"), std::string::npos);
   for (const char* cmd : {"info", "check", "convert"})
     EXPECT_EQ(run(std::string(cmd) + " --help").exit_code, 0) << cmd;
+  // The usage line names the program as the hints above do, not by the path it was run from.
+  EXPECT_NE(run("solve --help").out.find("\nUsage: bimdf solve [OPTIONS] PROBLEM\n"),
+            std::string::npos);
   const CliRun version = run("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_EQ(version.out.rfind("bimdf ", 0), 0u);
