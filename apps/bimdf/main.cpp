@@ -285,7 +285,7 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e) == 0 ? kOk : kBadInput;
     // Usage errors read like every other error of the program, and name the help that applies:
     // the subcommand's, when one was chosen before the error.
-    std::string help = "bimdf", message = e.what();
+    std::string help = app.get_name(), message = e.what();
     if (const std::vector<CLI::App*> chosen = app.get_subcommands(); !chosen.empty()) {
       help += " " + chosen.front()->get_name();
     } else if (argc > 1) {
