@@ -13,6 +13,7 @@ set(allowed_generate bimdf core generate)
 set(allowed_quant bimdf core io graph reduce solve quant)
 set(allowed_mesh bimdf core io graph reduce solve quant mesh)
 set(allowed_tmesh bimdf core io graph reduce solve quant mesh tmesh)
+set(allowed_layout bimdf core io graph reduce solve quant mesh layout)
 
 set(violations "")
 file(GLOB folders RELATIVE "${SOURCE_DIR}/src" "${SOURCE_DIR}/src/*")

@@ -31,6 +31,35 @@ TriangleMesh parse_obj_triangles(std::string_view text, const std::string& sourc
 // Reads an OBJ file (see parse_obj_triangles); throws InputError if it cannot be read.
 TriangleMesh read_obj_triangles(const std::string& path);
 
+// A polygon mesh as a file holds it (faces of three or more vertices), before it is checked or
+// triangulated: the input of the standalone remesher (bimdf/layout/surface.hpp).
+// `face_line[f]` is the line face f was read from in a text file (1-based), 0 where a binary
+// file has no lines.
+struct PolygonMesh {
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<std::vector<int>> faces;
+  std::vector<int> face_line;
+
+  int num_vertices() const { return static_cast<int>(vertices.size()); }
+  int num_faces() const { return static_cast<int>(faces.size()); }
+};
+
+// Parses OBJ text as parse_obj_triangles does, but accepts faces of any size ≥ 3.
+PolygonMesh parse_obj_polygons(std::string_view text, const std::string& source);
+
+// Parses OFF text (`OFF`, counts, vertices, faces `n i0 … in-1`; optional colours after a
+// face's indices are ignored). Throws InputError naming the line on malformed input.
+PolygonMesh parse_off(std::string_view text, const std::string& source);
+
+// Parses PLY (ascii, binary_little_endian or binary_big_endian): the `vertex` element's x, y, z
+// and the `face` element's `vertex_indices` (or `vertex_index`) list; other properties and
+// elements are skipped. Throws InputError naming the header line or the element on bad input.
+PolygonMesh parse_ply(std::string_view bytes, const std::string& source);
+
+// Reads a polygon mesh, choosing the format by the file's extension: .obj, .off or .ply (any
+// case). Throws InputError for another extension or a file that cannot be read.
+PolygonMesh read_polygon_mesh(const std::string& path);
+
 // An all-quad mesh: what tessellation produces. `quad_patch[f]` is the chart quad f was made
 // for (−1 when unknown); written to OBJ as groups `g patch_N`.
 struct QuadMesh {

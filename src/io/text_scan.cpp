@@ -104,4 +104,20 @@ std::string quote(std::string_view token) {
   return s + "'";
 }
 
+std::vector<std::string_view> line_words(std::string_view line) {
+  const auto blank = [](char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+  };
+  std::vector<std::string_view> words;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && blank(line[i])) ++i;
+    if (i < line.size() && line[i] == '#') break;
+    const size_t start = i;
+    while (i < line.size() && !blank(line[i])) ++i;
+    if (i > start) words.push_back(line.substr(start, i - start));
+  }
+  return words;
+}
+
 }  // namespace bimdf::detail

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "bimdf/error.hpp"
 
@@ -56,6 +57,9 @@ bool parse_double(std::string_view token, double& out);
 
 // Shortest decimal text that reads back to the same double (std::to_chars).
 std::string format_double(double v);
+
+// The whitespace-separated words of one line, up to a '#' comment (OBJ, OFF and PLY headers).
+std::vector<std::string_view> line_words(std::string_view line);
 
 // Quotes a token for an error message, shortened if long.
 std::string quote(std::string_view token);

@@ -6,6 +6,8 @@
 #include <ostream>
 #include <string>
 #include <tuple>
+#include <type_traits>
+#include <utility>
 
 #include "bimdf/error.hpp"
 #include "bimdf/io.hpp"
@@ -13,23 +15,6 @@
 #include "io/text_scan.hpp"
 
 namespace bimdf {
-namespace {
-
-// The whitespace-separated words of one line.
-std::vector<std::string_view> words_of(std::string_view line) {
-  std::vector<std::string_view> words;
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    const size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-    if (i > start) words.push_back(line.substr(start, i - start));
-  }
-  return words;
-}
-
-}  // namespace
-
 namespace {
 
 // The patch a `g` statement names: N for `g patch_N`, else −1.
@@ -41,14 +26,19 @@ int patch_of_group(const std::vector<std::string_view>& words) {
   return -1;
 }
 
-// The vertices and faces of OBJ text; every face must have as many vertices as Face holds.
-// With `face_patch`, each face's patch (patch_of_group of the last `g`) is appended to it.
+template <typename Face>
+constexpr bool kAnyPolygon = std::is_same_v<Face, std::vector<int>>;
+
+// The vertices and faces of OBJ text; every face must have as many vertices as Face holds, or
+// at least three for a polygon (std::vector<int>). With `face_patch`, each face's patch
+// (patch_of_group of the last `g`) is appended to it; with `face_line`, its line number.
 template <typename Face>
 void parse_obj(std::string_view text, const std::string& source,
                std::vector<std::array<double, 3>>& vertices, std::vector<Face>& faces,
-               std::vector<int>* face_patch) {
-  constexpr int arity = std::tuple_size_v<Face>;
-  const std::string expected = arity == 3 ? "a triangle" : "a quad";
+               std::vector<int>* face_patch, std::vector<int>* face_line = nullptr) {
+  std::string expected = "at least 3";
+  if constexpr (!kAnyPolygon<Face>)
+    expected = std::tuple_size_v<Face> == 3 ? "a triangle" : "a quad";
   int line_number = 0, patch = -1;
   size_t pos = 0;
   while (pos < text.size()) {
@@ -58,8 +48,8 @@ void parse_obj(std::string_view text, const std::string& source,
     pos = end + 1;
     ++line_number;
     const std::string where = std::to_string(line_number);
-    const std::vector<std::string_view> w = words_of(line);
-    if (w.empty() || w[0].front() == '#') continue;
+    const std::vector<std::string_view> w = detail::line_words(line);
+    if (w.empty()) continue;
     if (w[0] == "g") {
       patch = patch_of_group(w);
     } else if (w[0] == "v") {
@@ -73,11 +63,13 @@ void parse_obj(std::string_view text, const std::string& source,
               "vertex coordinate " + detail::quote(w[k + 1]) + " is not a finite number");
       vertices.push_back(p);
     } else if (w[0] == "f") {
-      if (static_cast<int>(w.size()) != arity + 1)
+      Face f{};
+      if constexpr (kAnyPolygon<Face>) f.resize(w.size() < 4 ? 0 : w.size() - 1);
+      const int arity = static_cast<int>(f.size());
+      if (arity < 3 || static_cast<int>(w.size()) != arity + 1)
         throw InputError(source, where,
                          "face " + std::to_string(faces.size()) + " has " +
                              std::to_string(w.size() - 1) + " vertices, expected " + expected);
-      Face f{};
       for (int k = 0; k < arity; ++k) {
         const std::string_view ref = w[k + 1].substr(0, w[k + 1].find('/'));
         int64_t index = 0;
@@ -98,8 +90,9 @@ void parse_obj(std::string_view text, const std::string& source,
           if (f[a] == f[b])
             throw InputError(source, where,
                              "face " + std::to_string(faces.size()) + " repeats a vertex");
-      faces.push_back(f);
+      faces.push_back(std::move(f));
       if (face_patch) face_patch->push_back(patch);
+      if (face_line) face_line->push_back(line_number);
     }
   }
 }
@@ -115,6 +108,12 @@ TriangleMesh parse_obj_triangles(std::string_view text, const std::string& sourc
 QuadMesh parse_obj_quads(std::string_view text, const std::string& source) {
   QuadMesh mesh;
   parse_obj(text, source, mesh.vertices, mesh.quads, &mesh.quad_patch);
+  return mesh;
+}
+
+PolygonMesh parse_obj_polygons(std::string_view text, const std::string& source) {
+  PolygonMesh mesh;
+  parse_obj(text, source, mesh.vertices, mesh.faces, nullptr, &mesh.face_line);
   return mesh;
 }
 

@@ -40,6 +40,43 @@ void expect_end(detail::TextScanner& in, const std::string& what) {
 
 }  // namespace
 
+std::vector<std::array<int, 2>> read_feature_edges(const std::string& path,
+                                                   const TriangleMesh& mesh) {
+  const int F = mesh.num_faces();
+  std::vector<std::array<int, 2>> feature_edges;
+  const std::string text = read_text_file(path);
+  detail::TextScanner in(text, path);
+  const int64_t n = expect_count(in, "the feature edge count", 3 * int64_t{F});
+  for (int64_t k = 0; k < n; ++k) {
+    const std::string what = "feature edge " + std::to_string(k) + " (face,edge)";
+    const detail::Token t = in.expect(what);
+    const size_t comma = t.text.find(',');
+    int64_t f = -1, e = -1;
+    if (comma == std::string_view::npos || !detail::parse_int64(t.text.substr(0, comma), f) ||
+        !detail::parse_int64(t.text.substr(comma + 1), e))
+      in.fail(t.line, what + ": expected two integers separated by a comma, found " +
+                          detail::quote(t.text));
+    if (f < 0 || f >= F || e < 0 || e > 2)
+      in.fail(t.line, what + ": face " + std::to_string(f) + " edge " + std::to_string(e) +
+                          " is out of range (faces 0.." + std::to_string(F - 1) + ", edges 0..2)");
+    feature_edges.push_back({mesh.faces[f][e], mesh.faces[f][(e + 1) % 3]});
+  }
+  expect_end(in, "feature edge");
+  return feature_edges;
+}
+
+std::vector<int> read_feature_corners(const std::string& path, int num_vertices) {
+  std::vector<int> feature_corners;
+  const std::string text = read_text_file(path);
+  detail::TextScanner in(text, path);
+  const int64_t n = expect_count(in, "the feature corner count", num_vertices);
+  for (int64_t k = 0; k < n; ++k)
+    feature_corners.push_back(
+        expect_index(in, "feature corner " + std::to_string(k), num_vertices));
+  expect_end(in, "feature corner");
+  return feature_corners;
+}
+
 Layout read_quadwild_layout(const std::string& obj_path) {
   TriangleMesh mesh = read_obj_triangles(obj_path);
   const int F = mesh.num_faces(), V = mesh.num_vertices();
@@ -82,38 +119,11 @@ Layout read_quadwild_layout(const std::string& obj_path) {
 
   // Features refer to faces as written; convert them to vertex pairs before re-orientation.
   std::vector<std::array<int, 2>> feature_edges;
-  const std::string feature_path = companion(".feature");
-  if (fs::exists(feature_path)) {
-    const std::string text = read_text_file(feature_path);
-    detail::TextScanner in(text, feature_path);
-    const int64_t n = expect_count(in, "the feature edge count", 3 * int64_t{F});
-    for (int64_t k = 0; k < n; ++k) {
-      const std::string what = "feature edge " + std::to_string(k) + " (face,edge)";
-      const detail::Token t = in.expect(what);
-      const size_t comma = t.text.find(',');
-      int64_t f = -1, e = -1;
-      if (comma == std::string_view::npos || !detail::parse_int64(t.text.substr(0, comma), f) ||
-          !detail::parse_int64(t.text.substr(comma + 1), e))
-        in.fail(t.line, what + ": expected two integers separated by a comma, found " +
-                            detail::quote(t.text));
-      if (f < 0 || f >= F || e < 0 || e > 2)
-        in.fail(t.line, what + ": face " + std::to_string(f) + " edge " + std::to_string(e) +
-                            " is out of range (faces 0.." + std::to_string(F - 1) +
-                            ", edges 0..2)");
-      feature_edges.push_back({mesh.faces[f][e], mesh.faces[f][(e + 1) % 3]});
-    }
-    expect_end(in, "feature edge");
-  }
+  if (fs::exists(companion(".feature")))
+    feature_edges = read_feature_edges(companion(".feature"), mesh);
   std::vector<int> feature_corners;
-  const std::string c_feature_path = companion(".c_feature");
-  if (fs::exists(c_feature_path)) {
-    const std::string text = read_text_file(c_feature_path);
-    detail::TextScanner in(text, c_feature_path);
-    const int64_t n = expect_count(in, "the feature corner count", V);
-    for (int64_t k = 0; k < n; ++k)
-      feature_corners.push_back(expect_index(in, "feature corner " + std::to_string(k), V));
-    expect_end(in, "feature corner");
-  }
+  if (fs::exists(companion(".c_feature")))
+    feature_corners = read_feature_corners(companion(".c_feature"), V);
 
   Layout layout = build_layout(std::move(mesh), std::move(face_chart), corners, obj_path);
   layout.feature_edges = std::move(feature_edges);

@@ -73,4 +73,11 @@ Layout build_layout(TriangleMesh mesh, std::vector<int> face_chart,
 // `.corners` (required), `.feature` and `.c_feature` (optional). Errors name the file and line.
 Layout read_quadwild_layout(const std::string& obj_path);
 
+// Reads QuadWild's NAME.feature (a count, then `face,edge` pairs: edge e of a face runs from its
+// vertex e to vertex e+1 mod 3) as the vertex pairs of `mesh`'s faces. Errors name file and line.
+std::vector<std::array<int, 2>> read_feature_edges(const std::string& path,
+                                                   const TriangleMesh& mesh);
+// Reads QuadWild's NAME.c_feature (a count, then vertex ids below `num_vertices`).
+std::vector<int> read_feature_corners(const std::string& path, int num_vertices);
+
 }  // namespace bimdf::quant
