@@ -72,4 +72,10 @@ void write_output_file(const std::string& path, const std::string& content,
   }
 }
 
+void print_stage(double elapsed_s, const std::string& stage, const std::string& detail) {
+  char head[48];
+  std::snprintf(head, sizeof head, "progress %.3f s: ", elapsed_s);
+  std::cerr << head << stage << ": " << detail << std::endl;
+}
+
 }  // namespace bimdf::cli

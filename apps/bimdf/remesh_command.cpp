@@ -24,9 +24,10 @@ void add_compare_option(CLI::App* cmd, std::string& compare) {
                   "side by side with this one's, against the same reference");
 }
 
-void add_mesh_output(CLI::App* cmd, RemeshCommandOptions& o) {
-  cmd->add_option("-o,--output", o.mesh_out, "The quad mesh OBJ to write (one group per patch)")
-      ->required();
+void add_mesh_output(CLI::App* cmd, RemeshCommandOptions& o, bool required = true) {
+  auto* out = cmd->add_option("-o,--output", o.mesh_out,
+                              "The quad mesh OBJ to write (one group per patch)");
+  if (required) out->required();
   cmd->add_flag("--json", o.quantize.out.json, "Print the report as JSON on stdout");
   cmd->add_option("--report", o.quantize.out.file, "Also write the report JSON to this file");
   cmd->add_flag("-v,--verbose", o.verbose, "Per-chart pattern details");
@@ -243,10 +244,17 @@ json compare_with(const QuadMeshMetrics& ours, const std::string& other_path,
 
 CLI::App* add_remesh_command(CLI::App& app, RemeshCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand(
-      "remesh", "Quantize a QuadWild patch layout and tessellate it into a quad mesh");
-  add_layout_argument(cmd, o.quantize.layout);
+      "remesh",
+      "Remesh a triangle mesh into quads: from a QuadWild patch layout, or from a bare mesh "
+      "(cross field and patch layout made here), quantized and tessellated");
+  cmd->add_option("MESH", o.quantize.layout,
+                  "A QuadWild layout NAME.obj (NAME.patch and NAME.corners beside it, and if "
+                  "present NAME.feature, NAME.c_feature), or a bare triangle or polygon mesh "
+                  "(.obj, .off, .ply)")
+      ->required();
   add_quantize_options(cmd, o.quantize);
-  add_mesh_output(cmd, o);
+  add_mesh_output(cmd, o, false);  // not with --info; run_remesh checks it
+  add_standalone_options(cmd, o.standalone);
   return cmd;
 }
 
@@ -292,12 +300,39 @@ int run_metrics(const MetricsCommandOptions& o) {
 
 int run_remesh(const RemeshCommandOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  const quant::Layout layout = quant::read_quadwild_layout(o.quantize.layout);
+  const bool bare = !is_quadwild_layout(o.quantize.layout);
+  if (o.standalone.info && !bare)
+    throw UsageError{"--info describes a bare mesh; " + o.quantize.layout +
+                     " is a QuadWild layout (bimdf quantize reports on it)"};
+  if (!o.standalone.info && o.mesh_out.empty())
+    throw UsageError{"--output is required\nRun 'bimdf remesh --help' for the options."};
+  StandaloneLayout made;
+  if (bare) {
+    made = build_standalone_layout(o.quantize.layout, o.standalone, start);
+    if (o.standalone.info) {
+      json j = made.json;
+      j["time"] = made.time;
+      deliver(o.quantize.out, made.text, j.dump(1) + "\n", {o.quantize.layout});
+      return kOk;
+    }
+  } else if (!o.standalone.layout_out.empty() || !o.standalone.feature_file.empty()) {
+    throw UsageError{"--layout-out and --feature apply to a bare mesh; " + o.quantize.layout +
+                     " is a QuadWild layout already"};
+  }
+  const quant::Layout layout =
+      bare ? std::move(made.layout) : quant::read_quadwild_layout(o.quantize.layout);
   const double read_s = seconds_since(start);
+  if (o.standalone.progress)
+    print_stage(read_s, "layout", std::to_string(layout.charts.size()) + " patches");
   const quant::Quantization q = quant::quantize(layout, effective_quantize_options(o.quantize));
   write_quantization_model(q, o.quantize);
   const double quantized_s = seconds_since(start);
+  if (o.standalone.progress)
+    print_stage(quantized_s, "quantized", std::to_string(layout.subsides.size()) + " subsides");
   const quant::Tessellation t = quant::tessellate(layout, q.lengths(), o.smoothing);
+  if (o.standalone.progress)
+    print_stage(seconds_since(start), "tessellated",
+                std::to_string(t.mesh.num_quads()) + " quads, smoothed");
   write_mesh(t, o, {o.quantize.layout});
   const QuantizationReport qr = report_quantization(layout, q, o.quantize, read_s, quantized_s);
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
@@ -312,11 +347,15 @@ int run_remesh(const RemeshCommandOptions& o) {
   j["time"]["quantize_s"] = quantized_s - read_s;
   j["time"]["metrics_s"] = seconds_since(measuring);
   j["time"]["total_s"] = seconds_since(start);
+  if (bare) {
+    for (const auto& [key, value] : made.json.items()) j[key] = value;
+    for (const auto& [key, value] : made.time.items()) j["time"][key] = value;
+  }
   tr.text += mr.text + "total time    " + ms(seconds_since(start)) + "\n";
   for (const std::string& w : layout.warnings) std::cerr << "warning: " << w << "\n";
   std::vector<std::string> inputs{o.quantize.layout};
   if (!o.compare.empty()) inputs.push_back(o.compare);
-  deliver(o.quantize.out, qr.text + tr.text, j.dump(1) + "\n", inputs);
+  deliver(o.quantize.out, made.text + qr.text + tr.text, j.dump(1) + "\n", inputs);
   return kOk;
 }
 

@@ -9,6 +9,7 @@
 #include "bimdf/metrics.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "quantize_command.hpp"
+#include "standalone_layout.hpp"
 
 namespace bimdf::cli {
 
@@ -19,6 +20,7 @@ struct RemeshCommandOptions {
   quant::SmoothingOptions smoothing;
   std::string compare;  // --compare OTHER.obj: its metrics beside the output's
   bool verbose = false;
+  StandaloneOptions standalone;  // remesh of a bare triangle mesh
 };
 
 struct MetricsCommandOptions {

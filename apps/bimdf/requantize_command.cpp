@@ -38,14 +38,6 @@ json valences(const std::map<int, int>& counts) {
   return j;
 }
 
-// One line per stage, on stderr (stdout may carry the report), timed from the command's start:
-//   progress 2.871 s: quantized: optimal, objective 2112, 310 arcs of length 0
-void print_progress(double elapsed_s, const std::string& stage, const std::string& detail) {
-  char head[48];
-  std::snprintf(head, sizeof head, "progress %.3f s: ", elapsed_s);
-  std::cerr << head << stage << ": " << detail << std::endl;
-}
-
 void write_text(const std::string& path, const std::string& text,
                 const std::vector<std::string>& inputs) {
   if (!path.empty()) write_output_file(path, text, inputs);
@@ -221,10 +213,10 @@ int run_requantize(const RequantizeCommandOptions& o) {
   }
   const double traced_s = seconds_since(start);
   if (o.progress) {
-    print_progress(traced_s, o.tmesh_in.empty() ? "traced" : "read",
-                   tmesh::progress_summary(traced.tmesh));
+    print_stage(traced_s, o.tmesh_in.empty() ? "traced" : "read",
+                tmesh::progress_summary(traced.tmesh));
     ro.progress = [start](const tmesh::RequantizeProgress& p) {
-      print_progress(seconds_since(start), p.stage, p.detail);
+      print_stage(seconds_since(start), p.stage, p.detail);
     };
   }
   if (!o.tmesh_out.empty()) {

@@ -1,0 +1,65 @@
+// A patch layout made from a bare triangle mesh (issue 51): cross field, motorcycle graph of
+// its separatrices, the mesh cut along them, patches and their corners — the same layout type
+// (quant::Layout) that `bimdf remesh` reads from QuadWild's files, so the rest of the pipeline
+// (quantization, tessellation, smoothing) is unchanged.
+//
+// Choice of method (docs/standalone_remesher.md): QuadWild traces many candidate paths and
+// selects a subset into 3–6-sided patches with the singularities inside; we trace each
+// separatrix once, as a motorcycle graph, which leaves quad patches with T-junctions and the
+// singularities at patch corners. No selection is needed, every singularity of the field is one
+// of the mesh's (no pattern adds any), and the quantizer's subsides already handle T-junctions.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "bimdf/layout/cross_field.hpp"
+#include "bimdf/layout/features.hpp"
+#include "bimdf/quant/layout.hpp"
+
+namespace bimdf::layout {
+
+struct LayoutOptions {
+  CrossFieldOptions field;
+  // Trace crossings within this fraction of an edge from a vertex pass through the vertex.
+  double snap = 0.1;
+  // Traces longer than this many bounding-box diagonals are given up (and removed).
+  double max_trace_length = 4;
+  // Rounds of seeding patches that are not disks (each round traces everything again).
+  int max_seed_rounds = 3;
+};
+
+// One progress report (LayoutOptions' caller decides what to show): a stage has just ended.
+struct LayoutProgress {
+  double elapsed_s = 0;
+  std::string stage;   // "field", "traced", "cut", "patches"
+  std::string detail;  // what the stage found, in words and figures
+};
+
+struct GeneratedLayout {
+  quant::Layout layout;    // on the cut mesh; average_edge_length is the input mesh's
+  FieldIndices indices;    // the field's singularities, on the input mesh
+  int trace_starts = 0;    // vertices separatrices start from
+  int traces = 0;          // kept
+  int removed_traces = 0;  // unfinished, or ending on one that was removed
+  int adjusted_patches = 0;
+  int seeds = 0;  // regular vertices traced from to cut patches that were not disks  // patches
+                  // given 3 or 6 corners where they had fewer or more
+  double time_field_s = 0, time_trace_s = 0, time_cut_s = 0, time_patches_s = 0;
+};
+
+// Builds the layout of `mesh` (prepare_surface's output) with `features` (detect_features or
+// features_from_edges on it). Throws std::runtime_error when a patch cannot be a chart (not a
+// disk, or fewer than 3 or more than 6 corners), naming it.
+GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
+                                const LayoutOptions& options,
+                                const std::function<void(const LayoutProgress&)>& progress = {});
+
+// A layout as QuadWild's step-2 files (quadwild_modeling.md §1.1), as text: `NAME.obj`,
+// `.patch`, `.corners`, `.feature` (face,edge pairs of the feature edges), `.c_feature`.
+struct QuadwildFiles {
+  std::string obj, patch, corners, feature, c_feature;
+};
+QuadwildFiles to_quadwild_files(const quant::Layout& layout);
+
+}  // namespace bimdf::layout

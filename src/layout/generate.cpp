@@ -1,0 +1,335 @@
+// The standalone layout pipeline: field, motorcycle graph, cut, patches (generate.hpp).
+#include "bimdf/layout/generate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "layout/face_frames.hpp"
+#include "layout/feature_flags.hpp"
+#include "layout/mesh_cutting.hpp"
+#include "layout/patches.hpp"
+#include "layout/surface_topology.hpp"
+#include "layout/tracing.hpp"
+
+namespace bimdf::layout {
+namespace {
+
+std::pair<int, int> edge_key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Removes unfinished traces, then traces that end on a removed one (their end would dangle),
+// until none is left to remove. Returns how many were removed.
+int drop_dangling(std::vector<Trace>& traces) {
+  std::vector<bool> removed(traces.size(), false);
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    for (size_t i = 0; i < traces.size(); ++i) {
+      if (removed[i]) continue;
+      const Trace& t = traces[i];
+      const bool dangling = t.end == Trace::End::Unfinished ||
+                            (t.end_trace >= 0 && removed[t.end_trace]) || t.points.size() < 2;
+      if (dangling) removed[i] = changed = true;
+    }
+  }
+  int n = 0;
+  std::vector<Trace> kept;
+  for (size_t i = 0; i < traces.size(); ++i)
+    if (removed[i])
+      ++n;
+    else
+      kept.push_back(std::move(traces[i]));
+  traces = std::move(kept);
+  return n;
+}
+
+// Per vertex of the cut mesh: the input edge it was inserted on, or −1 (an input vertex, or a
+// point inside a face).
+std::vector<int> inserted_on_edge(const SurfaceTopology& input, const CutMesh& cut) {
+  const TriangleMesh& in = input.mesh();
+  const int V0 = in.num_vertices();
+  std::vector<int> face_of(cut.mesh.num_vertices(), -1);
+  for (int f = 0; f < cut.mesh.num_faces(); ++f)
+    for (int v : cut.mesh.faces[f]) face_of[v] = cut.parent_face[f];
+  std::vector<int> edge(cut.mesh.num_vertices(), -1);
+  for (int v = V0; v < cut.mesh.num_vertices(); ++v) {
+    const int f = face_of[v];
+    if (f < 0) continue;
+    const detail::Vec3& x = cut.mesh.vertices[v];
+    // The edge of f the point is closest to, if it is on it (relative distance 1e-9).
+    double best = std::numeric_limits<double>::infinity();
+    int best_h = -1;
+    for (int i = 0; i < 3; ++i) {
+      const int h = 3 * f + i;
+      const detail::Vec3 &a = in.vertices[input.from(h)], &b = in.vertices[input.to(h)];
+      const detail::Vec3 ab = detail::sub(b, a);
+      const double len = detail::norm(ab);
+      const double d = detail::norm(detail::cross(ab, detail::sub(x, a))) / (len * len);
+      if (d < best) best = d, best_h = h;
+    }
+    if (best < 1e-9) edge[v] = input.edge(best_h);
+  }
+  return edge;
+}
+
+// Two seeds in every patch that is not a disk: the patch's input vertex farthest (in edges)
+// from its boundary, then the one farthest from the boundary and the first seed. Only input
+// vertices (the cut mesh numbers them first) that are regular and inside the patch qualify.
+std::vector<int> seeds_for_non_disks(const SurfaceTopology& cut, const Patches& patches,
+                                     int input_vertices, const std::vector<int>& quarter_index) {
+  const TriangleMesh& m = cut.mesh();
+  const int F = m.num_faces();
+  std::vector<int> seeds;
+  std::vector<std::vector<int>> faces_of(patches.problem.size());
+  for (int f = 0; f < F; ++f)
+    if (!patches.problem[patches.face_patch[f]].empty())
+      faces_of[patches.face_patch[f]].push_back(f);
+  for (size_t p = 0; p < faces_of.size(); ++p) {
+    if (faces_of[p].empty()) continue;
+    // Vertices of the patch, and which lie on its boundary (an edge whose other side is another
+    // patch, or the mesh border).
+    std::vector<int> verts, frontier;
+    std::vector<std::vector<int>> neighbours;
+    std::map<int, int> index;
+    for (int f : faces_of[p])
+      for (int v : m.faces[f])
+        if (index.emplace(v, static_cast<int>(verts.size())).second) verts.push_back(v);
+    neighbours.resize(verts.size());
+    std::vector<bool> boundary(verts.size(), false);
+    for (int f : faces_of[p])
+      for (int i = 0; i < 3; ++i) {
+        const int h = 3 * f + i, g = cut.opposite(h);
+        const int a = index[cut.from(h)], b = index[cut.to(h)];
+        neighbours[a].push_back(b);
+        if (g < 0 || patches.face_patch[g / 3] != static_cast<int>(p))
+          boundary[a] = boundary[b] = true;
+      }
+    for (int round = 0; round < 2; ++round) {
+      std::vector<int> d(verts.size(), -1), queue;
+      for (size_t i = 0; i < verts.size(); ++i)
+        if (boundary[i] || (round == 1 && !seeds.empty() && verts[i] == seeds.back()))
+          d[i] = 0, queue.push_back(static_cast<int>(i));
+      for (size_t q = 0; q < queue.size(); ++q)
+        for (int n : neighbours[queue[q]])
+          if (d[n] < 0) d[n] = d[queue[q]] + 1, queue.push_back(n);
+      int best = -1;
+      for (size_t i = 0; i < verts.size(); ++i)
+        if (verts[i] < input_vertices && quarter_index[verts[i]] == 0 && d[i] >= 1 &&
+            (best < 0 || d[i] > d[best]))
+          best = static_cast<int>(i);
+      if (best < 0) {
+        // A ring one triangle wide (e.g. between two feature loops): seeds on its boundary,
+        // traced across it (tracing.cpp), the second as far from the first as the ring goes.
+        std::vector<int> from_first(verts.size(), -1), order;
+        for (size_t i = 0; i < verts.size() && order.empty(); ++i)
+          if (verts[i] < input_vertices && quarter_index[verts[i]] == 0)
+            from_first[i] = 0, order.push_back(static_cast<int>(i));
+        for (size_t q = 0; q < order.size(); ++q)
+          for (int n : neighbours[order[q]])
+            if (from_first[n] < 0) from_first[n] = from_first[order[q]] + 1, order.push_back(n);
+        int far = -1;
+        for (int i : order)
+          if (verts[i] < input_vertices && quarter_index[verts[i]] == 0 &&
+              (far < 0 || from_first[i] > from_first[far]))
+            far = i;
+        if (!order.empty()) seeds.push_back(verts[order[0]]);
+        if (far >= 0 && far != order[0]) seeds.push_back(verts[far]);
+        break;
+      }
+      seeds.push_back(verts[best]);
+    }
+  }
+  return seeds;
+}
+
+}  // namespace
+
+GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
+                                const LayoutOptions& options,
+                                const std::function<void(const LayoutProgress&)>& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto report = [&](const char* stage, const std::string& detail) {
+    if (progress) progress({since(start), stage, detail});
+  };
+  GeneratedLayout out;
+  const SurfaceTopology top(mesh);
+  const FaceFrames frames(mesh);
+  const std::vector<bool> curve = feature_edge_flags(top, features);
+
+  auto t = std::chrono::steady_clock::now();
+  const CrossField field = compute_cross_field(mesh, features, options.field);
+  out.indices = field_indices(mesh, field);
+  out.time_field_s = since(t);
+  {
+    int inside = 0;
+    for (const auto& s : out.indices.singularities) inside += !s.on_border;
+    report("field", std::to_string(inside) + " singularities inside, index sum " +
+                        std::to_string(out.indices.quarter_index_sum) + "/4");
+  }
+
+  TraceOptions trace;
+  trace.snap = options.snap;
+  trace.max_length = options.max_trace_length;
+  CutMesh cut;
+  Patches patches;
+  std::vector<std::array<int, 2>> sharp_pieces;
+  // Separatrices may leave a patch that is not a disk (around a handle, between two border
+  // loops, a whole torus): such a patch gets two seeds — regular vertices traced in all four
+  // directions — and everything is traced again, up to `max_seed_rounds` times.
+  for (int round = 0;; ++round) {
+    t = std::chrono::steady_clock::now();
+    MotorcycleGraph graph =
+        trace_motorcycle_graph(top, frames, field, out.indices.quarter_index, curve, trace);
+    out.trace_starts = graph.starts;
+    out.removed_traces = drop_dangling(graph.traces);
+    out.traces = static_cast<int>(graph.traces.size());
+    out.time_trace_s = since(t);
+    report("traced", std::to_string(out.traces) + " separatrices from " +
+                         std::to_string(out.trace_starts) + " vertices, " +
+                         std::to_string(out.removed_traces) + " removed");
+
+    t = std::chrono::steady_clock::now();
+    std::vector<std::vector<SurfacePoint>> polylines;
+    for (const Trace& tr : graph.traces) polylines.push_back(tr.points);
+    cut = cut_along_polylines(top, polylines);
+    out.time_cut_s = since(t);
+    report("cut", std::to_string(cut.mesh.num_faces()) + " triangles (" +
+                      std::to_string(cut.mesh.num_faces() - mesh.num_faces()) + " more)");
+
+    t = std::chrono::steady_clock::now();
+    const SurfaceTopology cut_top(cut.mesh);
+    // Patch borders: every trace edge, and the pieces of every input curve edge.
+    std::vector<bool> border(cut_top.num_edges(), false);
+    std::map<std::pair<int, int>, int> edge_of;
+    for (int e = 0; e < cut_top.num_edges(); ++e) {
+      const int h = cut_top.edge_half_edge(e);
+      edge_of[edge_key(cut_top.from(h), cut_top.to(h))] = e;
+    }
+    for (const auto& chain : cut.polyline_vertices)
+      for (size_t i = 0; i + 1 < chain.size(); ++i) {
+        const auto it = edge_of.find(edge_key(chain[i], chain[i + 1]));
+        if (it == edge_of.end())
+          throw std::logic_error("layout: a cut polyline step is not a mesh edge");
+        border[it->second] = true;
+      }
+    const std::vector<int> on_edge = inserted_on_edge(top, cut);
+    const int V0 = mesh.num_vertices();
+    std::map<std::pair<int, int>, int> input_edge_of;
+    for (int e = 0; e < top.num_edges(); ++e) {
+      const int h = top.edge_half_edge(e);
+      input_edge_of[edge_key(top.from(h), top.to(h))] = e;
+    }
+    sharp_pieces.clear();
+    for (int e = 0; e < cut_top.num_edges(); ++e) {
+      const int h = cut_top.edge_half_edge(e), a = cut_top.from(h), b = cut_top.to(h);
+      int input = -1;
+      if (a < V0 && b < V0) {
+        const auto it = input_edge_of.find(edge_key(a, b));
+        if (it != input_edge_of.end()) input = it->second;
+      } else {
+        const int on = on_edge[a >= V0 ? a : b];
+        const int other = a >= V0 ? b : a;
+        if (on >= 0) {
+          const int g = top.edge_half_edge(on);
+          if ((other < V0 && (other == top.from(g) || other == top.to(g))) ||
+              (other >= V0 && on_edge[other] == on))
+            input = on;
+        }
+      }
+      if (input < 0 || !curve[input]) continue;
+      border[e] = true;
+      if (top.opposite(top.edge_half_edge(input)) >= 0) sharp_pieces.push_back({a, b});
+    }
+    patches = label_patches(cut_top, border);
+    const std::vector<int> seeds =
+        seeds_for_non_disks(cut_top, patches, mesh.num_vertices(), out.indices.quarter_index);
+    if (seeds.empty() || round == options.max_seed_rounds) {
+      {
+        int bad = 0, first = -1;
+        std::map<std::string, int> kinds;
+        for (size_t p = 0; p < patches.problem.size(); ++p)
+          if (!patches.problem[p].empty()) {
+            if (bad++ == 0) first = static_cast<int>(p);
+            ++kinds[patches.problem[p]];
+          }
+        if (bad > 0) {
+          std::string list;
+          for (const auto& [what, n] : kinds)
+            list += (list.empty() ? "" : ", ") + std::to_string(n) + " × " + what;
+          throw std::runtime_error(std::to_string(bad) + " of " +
+                                   std::to_string(patches.problem.size()) +
+                                   " patches cannot be charts (" + list + "; first: patch " +
+                                   std::to_string(first) + ")");
+        }
+      }
+      break;
+    }
+    trace.seeds.insert(trace.seeds.end(), seeds.begin(), seeds.end());
+    out.seeds = static_cast<int>(trace.seeds.size());
+    report("seeds", std::to_string(seeds.size()) + " seeds for patches that are not disks");
+  }
+  out.layout = quant::build_layout(cut.mesh, patches.face_patch, patches.corners, "<layout>");
+  out.layout.feature_edges = std::move(sharp_pieces);
+  out.layout.feature_corners = features.corners;  // input vertices keep their ids
+  // Density follows the input mesh, not the cut one (cutting adds short edges).
+  {
+    double sum = 0;
+    for (int f = 0; f < mesh.num_faces(); ++f)
+      for (int k = 0; k < 3; ++k)
+        sum += detail::norm(detail::sub(mesh.vertices[mesh.faces[f][(k + 1) % 3]],
+                                        mesh.vertices[mesh.faces[f][k]]));
+    out.layout.average_edge_length = mesh.num_faces() > 0 ? sum / (3 * mesh.num_faces()) : 0;
+  }
+  out.time_patches_s = since(t);
+  out.adjusted_patches = patches.adjusted;
+  report("patches", std::to_string(out.layout.charts.size()) + " patches (" +
+                        std::to_string(patches.adjusted) + " with corners adjusted)");
+  return out;
+}
+
+QuadwildFiles to_quadwild_files(const quant::Layout& layout) {
+  QuadwildFiles files;
+  const TriangleMesh& m = layout.mesh;
+  std::ostringstream obj, patch, corners, feature, c_feature;
+  obj.precision(std::numeric_limits<double>::max_digits10);
+  for (const auto& v : m.vertices) obj << "v " << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+  for (const auto& f : m.faces)
+    obj << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
+  patch << m.num_faces() << '\n';
+  for (int c : layout.face_chart) patch << c << '\n';
+  corners << layout.charts.size() << '\n';
+  for (const quant::Chart& c : layout.charts) {
+    corners << c.corners.size() << '\n';
+    for (int v : c.corners) corners << v << '\n';
+  }
+  // Feature edges as (face, local edge): the first face walking the pair either way.
+  std::map<std::pair<int, int>, std::pair<int, int>> face_edge;
+  for (int f = 0; f < m.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      face_edge.emplace(edge_key(m.faces[f][k], m.faces[f][(k + 1) % 3]), std::pair{f, k});
+  std::vector<std::pair<int, int>> listed;
+  for (const auto& e : layout.feature_edges) {
+    const auto it = face_edge.find(edge_key(e[0], e[1]));
+    if (it != face_edge.end()) listed.push_back(it->second);
+  }
+  feature << listed.size() << '\n';
+  for (const auto& [f, k] : listed) feature << f << ',' << k << '\n';
+  c_feature << layout.feature_corners.size() << '\n';
+  for (int v : layout.feature_corners) c_feature << v << '\n';
+  files.obj = obj.str();
+  files.patch = patch.str();
+  files.corners = corners.str();
+  files.feature = feature.str();
+  files.c_feature = c_feature.str();
+  return files;
+}
+
+}  // namespace bimdf::layout

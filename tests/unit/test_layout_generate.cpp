@@ -1,0 +1,110 @@
+// The standalone layout pipeline (src/layout/generate.cpp, tracing.cpp, patches.cpp): layouts
+// of known shape on procedural meshes, checked by the QuadWild layout reader's own rules
+// (quant::build_layout), and their QuadWild files read back.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "bimdf/layout/generate.hpp"
+#include "bimdf/layout/surface.hpp"
+#include "bimdf/quant/layout.hpp"
+#include "surface_fixtures.hpp"
+
+namespace bimdf {
+namespace {
+
+double area(const TriangleMesh& m) { return layout::describe_surface(m).area; }
+
+layout::GeneratedLayout make(const TriangleMesh& mesh) {
+  const layout::Features f = layout::detect_features(mesh, {});
+  return layout::generate_layout(mesh, f, {});
+}
+
+// Every chart a disk with 3 to 6 corners on its boundary (build_layout has checked it), the
+// cut mesh the same surface, every input vertex kept in place.
+void expect_valid(const TriangleMesh& input, const layout::GeneratedLayout& g) {
+  const quant::Layout& l = g.layout;
+  EXPECT_NEAR(area(l.mesh), area(input), 1e-9 * area(input));
+  for (int v = 0; v < input.num_vertices(); ++v) EXPECT_EQ(l.mesh.vertices[v], input.vertices[v]);
+  for (const quant::Chart& c : l.charts) {
+    EXPECT_FALSE(c.empty());
+    EXPECT_GE(c.valence(), 3);
+    EXPECT_LE(c.valence(), 6);
+  }
+  EXPECT_EQ(g.indices.quarter_index_sum, 4 * layout::describe_surface(input).euler_characteristic);
+}
+
+TEST(LayoutGenerate, CubeIsSixQuadPatchesWithItsCornersAsSingularities) {
+  const TriangleMesh cube = test::cube(4);
+  const layout::GeneratedLayout g = make(cube);
+  expect_valid(cube, g);
+  EXPECT_EQ(g.traces, 0);  // every singularity is a crease corner: nothing to trace
+  ASSERT_EQ(g.layout.charts.size(), 6u);
+  for (const quant::Chart& c : g.layout.charts) {
+    EXPECT_EQ(c.valence(), 4);
+    EXPECT_EQ(c.faces.size(), 4u * 4 * 2);
+    for (int v : c.corners)
+      for (double x : cube.vertices[v]) EXPECT_EQ(std::fabs(x), 1.0);
+  }
+  int valence3 = 0;
+  for (const auto& s : g.indices.singularities) valence3 += s.quarter_index == 1;
+  EXPECT_EQ(valence3, 8);
+  EXPECT_EQ(g.layout.feature_corners.size(), 8u);
+  EXPECT_EQ(g.layout.feature_edges.size(), 12u * 4);
+}
+
+TEST(LayoutGenerate, SquareIsOnePatchAndSphereIsCutAlongItsSeparatrices) {
+  const TriangleMesh square = test::square(1, 5);
+  const layout::GeneratedLayout s = make(square);
+  expect_valid(square, s);
+  ASSERT_EQ(s.layout.charts.size(), 1u);
+  EXPECT_EQ(s.layout.charts[0].valence(), 4);
+
+  layout::LayoutOptions options;
+  options.field.align_to_curvature = false;  // the smoothest field: 8 valence-3 singularities
+  const TriangleMesh sphere = test::icosphere(3);
+  const layout::GeneratedLayout g =
+      layout::generate_layout(sphere, layout::detect_features(sphere, {}), options);
+  expect_valid(sphere, g);
+  EXPECT_EQ(g.trace_starts, 8);
+  // 3 separatrices each; a pair running into each other head on is traced once.
+  EXPECT_GE(g.traces, 12);
+  EXPECT_LE(g.traces, 24);
+  EXPECT_GE(g.layout.charts.size(), 6u);
+}
+
+TEST(LayoutGenerate, SeveralPiecesAndQuadwildFilesReadBack) {
+  const TriangleMesh mesh = test::combine(test::cube(3), test::square(1, 4), 4);
+  const layout::GeneratedLayout g = make(mesh);
+  expect_valid(mesh, g);
+  EXPECT_EQ(g.layout.charts.size(), 7u);
+  // Written as QuadWild's files and read back by the layout reader: the same charts.
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("bimdf_layout_files_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const layout::QuadwildFiles files = layout::to_quadwild_files(g.layout);
+  const auto write = [&](const char* name, const std::string& text) {
+    std::ofstream((dir / name).string()) << text;
+  };
+  write("m.obj", files.obj);
+  write("m.patch", files.patch);
+  write("m.corners", files.corners);
+  write("m.feature", files.feature);
+  write("m.c_feature", files.c_feature);
+  const quant::Layout back = quant::read_quadwild_layout((dir / "m.obj").string());
+  std::filesystem::remove_all(dir);
+  ASSERT_EQ(back.charts.size(), g.layout.charts.size());
+  for (size_t c = 0; c < back.charts.size(); ++c) {
+    EXPECT_EQ(back.charts[c].faces, g.layout.charts[c].faces);
+    EXPECT_EQ(back.charts[c].valence(), g.layout.charts[c].valence());
+  }
+  EXPECT_EQ(back.subsides.size(), g.layout.subsides.size());
+  EXPECT_EQ(back.feature_edges.size(), g.layout.feature_edges.size());
+  EXPECT_EQ(back.feature_corners, g.layout.feature_corners);
+}
+
+}  // namespace
+}  // namespace bimdf
