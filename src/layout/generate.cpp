@@ -150,6 +150,37 @@ std::vector<int> seeds_for_non_disks(const SurfaceTopology& cut, const Patches& 
   return seeds;
 }
 
+// The field's quarter turns around each vertex of the cut mesh (inserted vertices are
+// regular), and the T-junctions: a vertex where exactly one trace ends, no trace starts, and
+// the ending trace is not all that passes (another trace goes through, or a curve).
+CornerHints corner_hints(const SurfaceTopology& cut_top, const CutMesh& cut,
+                         const std::vector<Trace>& traces, const std::vector<int>& quarter_index,
+                         int input_vertices) {
+  const int V = cut.mesh.num_vertices();
+  CornerHints hints;
+  hints.field_quarters.resize(V);
+  for (int v = 0; v < V; ++v)
+    hints.field_quarters[v] =
+        (cut_top.on_border(v) ? 2 : 4) - (v < input_vertices ? quarter_index[v] : 0);
+  hints.ending_edge.assign(V, -1);
+  std::vector<int> ends(V, 0), starts(V, 0), last(V, -1);
+  std::map<std::pair<int, int>, int> edge_of;
+  for (int e = 0; e < cut_top.num_edges(); ++e) {
+    const int h = cut_top.edge_half_edge(e);
+    edge_of[edge_key(cut_top.from(h), cut_top.to(h))] = e;
+  }
+  for (size_t i = 0; i < traces.size() && i < cut.polyline_vertices.size(); ++i) {
+    const std::vector<int>& chain = cut.polyline_vertices[i];
+    if (chain.size() < 2) continue;
+    ++starts[chain.front()];
+    ++ends[chain.back()];
+    last[chain.back()] = edge_of.at(edge_key(chain[chain.size() - 2], chain.back()));
+  }
+  for (int v = 0; v < V; ++v)
+    if (ends[v] == 1 && starts[v] == 0) hints.ending_edge[v] = last[v];
+  return hints;
+}
+
 }  // namespace
 
 GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
@@ -186,14 +217,28 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
   // directions — and everything is traced again, up to `max_seed_rounds` times.
   for (int round = 0;; ++round) {
     t = std::chrono::steady_clock::now();
-    MotorcycleGraph graph =
-        trace_motorcycle_graph(top, frames, field, out.indices.quarter_index, curve, trace);
+    MotorcycleGraph graph;
+    // A separatrix that runs into a line of its own family at a shallow angle is that line,
+    // drifted: it is not traced, and everything is traced again without it (which may let
+    // other separatrices run on), up to `max_ban_rounds` times.
+    for (int ban_round = 0;; ++ban_round) {
+      graph = trace_motorcycle_graph(top, frames, field, out.indices.quarter_index, curve, trace);
+      if (ban_round == options.max_ban_rounds) break;
+      size_t before = trace.banned.size();
+      for (const Trace& tr : graph.traces)
+        if ((tr.end == Trace::End::Trace || tr.end == Trace::End::Curve) &&
+            tr.end_angle < options.shallow_angle_deg * M_PI / 180)
+          trace.banned.push_back({tr.start_vertex, tr.start_way});
+      if (trace.banned.size() == before) break;
+    }
+    out.banned_traces = static_cast<int>(trace.banned.size());
     out.trace_starts = graph.starts;
     out.removed_traces = drop_dangling(graph.traces);
     out.traces = static_cast<int>(graph.traces.size());
     out.time_trace_s = since(t);
     report("traced", std::to_string(out.traces) + " separatrices from " +
                          std::to_string(out.trace_starts) + " vertices, " +
+                         std::to_string(out.banned_traces) + " not traced (shallow ends), " +
                          std::to_string(out.removed_traces) + " removed");
 
     t = std::chrono::steady_clock::now();
@@ -248,7 +293,9 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
       border[e] = true;
       if (top.opposite(top.edge_half_edge(input)) >= 0) sharp_pieces.push_back({a, b});
     }
-    patches = label_patches(cut_top, border);
+    patches = label_patches(
+        cut_top, border,
+        corner_hints(cut_top, cut, graph.traces, out.indices.quarter_index, mesh.num_vertices()));
     const std::vector<int> seeds =
         seeds_for_non_disks(cut_top, patches, mesh.num_vertices(), out.indices.quarter_index);
     if (seeds.empty() || round == options.max_seed_rounds) {

@@ -20,7 +20,8 @@ double corner_angle(const SurfaceTopology& top, int h) {
 
 }  // namespace
 
-Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& boundary_edge) {
+Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& boundary_edge,
+                      const CornerHints& hints) {
   const TriangleMesh& m = top.mesh();
   const int F = m.num_faces(), V = m.num_vertices();
   Patches out;
@@ -66,7 +67,8 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     for (const auto& [p, v] : pairs) ++vertices[p];
   }
-  // Total angle around each vertex, for scaling a patch's angle to a flat vertex's.
+  // Total angle around each vertex: a sector's share of it, times the field's quarter turns
+  // there, is the sector's turn.
   std::vector<double> total(V, 0);
   for (int h = 0; h < 3 * F; ++h) total[top.from(h)] += corner_angle(top, h);
 
@@ -83,32 +85,42 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
                            : "its boundary touches itself";
     }
   }
-  // Angles: sum the patch's corner angles at its boundary vertices.
-  std::vector<std::map<int, double>> sector(P);
+  // Each disk patch meets each of its boundary vertices in one sector: its angle there, and
+  // the two boundary edges that bound it (leaving and reaching the vertex along its border).
+  struct Sector {
+    double angle = 0;
+    int edge_out = -1, edge_in = -1;
+  };
+  std::vector<std::map<int, Sector>> sector(P);
   for (int p = 0; p < P; ++p)
-    for (int h : patch_border[p]) sector[p][top.from(h)] = 0;
+    for (int h : patch_border[p]) {
+      sector[p][top.from(h)].edge_out = top.edge(h);
+      sector[p][top.to(h)].edge_in = top.edge(h);
+    }
   for (int h = 0; h < 3 * F; ++h) {
     const int p = out.face_patch[h / 3];
     auto it = sector[p].find(top.from(h));
-    if (it != sector[p].end()) it->second += corner_angle(top, h);
+    if (it != sector[p].end()) it->second.angle += corner_angle(top, h);
   }
   for (int p = 0; p < P; ++p) {
     if (!out.problem[p].empty()) continue;
-    std::vector<std::pair<double, int>> by_angle;  // scaled angle, vertex
-    for (const auto& [v, a] : sector[p])
-      // Inside, the angle in a flat vertex's terms; on the mesh border as it is (the border
-      // may turn there: the corner is real).
-      by_angle.push_back({top.on_border(v) ? a : a * 2 * M_PI / total[v], v});
-    std::sort(by_angle.begin(), by_angle.end());
+    std::vector<std::pair<double, int>> by_turn;  // the sector in quarter turns, vertex
+    for (const auto& [v, sec] : sector[p]) {
+      double quarters = sec.angle / total[v] * hints.field_quarters[v];
+      const int end = hints.ending_edge[v];
+      if (end >= 0) quarters = end == sec.edge_out || end == sec.edge_in ? 1 : 2;
+      by_turn.push_back({quarters, v});
+    }
+    std::sort(by_turn.begin(), by_turn.end());
     int k = 0;
-    while (k < static_cast<int>(by_angle.size()) && by_angle[k].first < 0.75 * M_PI) ++k;
-    // A patch the traces left with fewer than 3 or more than 6 sharp turns (two traces meeting
-    // at a sliver, a wiggly feature curve) still gets 3 to 6 corners, its sharpest turns: its
+    while (k < static_cast<int>(by_turn.size()) && by_turn[k].first < 1.5) ++k;
+    // A patch the traces left with fewer than 3 or more than 6 corners (two traces meeting at a
+    // sliver, a wiggly feature curve) still gets 3 to 6 corners, its sharpest turns: its
     // pattern then has a singularity, which is better than no layout.
     const int kept = std::clamp(k, 3, 6);
     if (kept != k) ++out.adjusted;
-    for (int i = 0; i < std::min(kept, static_cast<int>(by_angle.size())); ++i)
-      out.corners[p].push_back(by_angle[i].second);
+    for (int i = 0; i < std::min(kept, static_cast<int>(by_turn.size())); ++i)
+      out.corners[p].push_back(by_turn[i].second);
     if (static_cast<int>(out.corners[p].size()) < 3)
       out.problem[p] = std::to_string(out.corners[p].size()) + " boundary vertices";
   }

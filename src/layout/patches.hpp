@@ -18,11 +18,24 @@ struct Patches {
   int adjusted = 0;
 };
 
+// What decides corners, per vertex of the mesh being labelled.
+struct CornerHints {
+  // Quarter turns the cross field makes around the vertex: 4 − its quarter index inside the
+  // mesh, 2 − it on the border (a straight border 2, a right-angled corner 1).
+  std::vector<int> field_quarters;
+  // The edge by which the one trace ending here arrives, where it ends on a line that goes on
+  // (a T-junction: the two patches beside that edge have a corner here, the one across the
+  // line has none, whatever the angles); −1 elsewhere.
+  std::vector<int> ending_edge;
+};
+
 // Floods faces across every edge that is not a boundary (`boundary_edge` per edge of `top`:
-// traces, feature curves; the mesh border bounds patches anyway). A boundary vertex is a corner
-// of a patch where the patch's angle there (inside the mesh scaled to a flat vertex's 2π) is
-// below 135°: a right angle or a singularity's sector, not a straight side. A patch
-// with fewer than 3 or more than 6 such turns gets its 3 (or 6) sharpest.
-Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& boundary_edge);
+// traces, feature curves; the mesh border bounds patches anyway). A patch has a corner at a
+// boundary vertex where its sector there turns by at most one quarter of the field (the
+// sector's share of the vertex's total angle, times the field's quarter turns around it,
+// rounded), or beside a trace ending there (CornerHints). A patch with fewer than 3 or more
+// than 6 corners gets its 3 (or 6) sharpest turns.
+Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& boundary_edge,
+                      const CornerHints& hints);
 
 }  // namespace bimdf::layout

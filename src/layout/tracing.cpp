@@ -11,6 +11,12 @@ namespace {
 using detail::Vec3;
 constexpr double kQuarter = M_PI / 2;
 
+// The angle between two lines (not directions): 0 to π/2.
+double line_angle(const Vec3& a, const Vec3& b) {
+  const double n = detail::norm(a) * detail::norm(b);
+  return n > 0 ? std::acos(std::min(1.0, std::fabs(detail::dot(a, b)) / n)) : M_PI / 2;
+}
+
 double wrap_2pi(double a) {
   a = std::fmod(a, 2 * M_PI);
   return a < 0 ? a + 2 * M_PI : a;
@@ -151,6 +157,7 @@ class Tracer {
   // first singularity they pass head on, which they note in `approach_`.
   bool free_ = false;
   double approach_radius_ = 0;
+  mutable Vec3 hit_direction_{};                  // of the drawn piece first_hit last met
   std::vector<std::vector<Vec3>> leave_vectors_;  // per vertex, its separatrices' directions
   struct Approach {
     int vertex = -1, leave = -1;
@@ -317,6 +324,7 @@ double Tracer::first_hit(int f, int trace, const Vec3& p, const Vec3& q, Surface
     if (hit < best) {
       best = hit;
       other = s.trace;
+      hit_direction_ = detail::sub(s.pb, s.pa);
     }
   }
   if (best > 1 + 1e-9) return -1;
@@ -343,6 +351,12 @@ bool Tracer::arrive(Walker& w, const SurfacePoint& q, const Vec3& qpos, int face
     }
     if (!free_) owner_[v] = w.trace;
     if (curve_vertex_[v]) {
+      for (int h : top_.outgoing(v))
+        for (int k : {h, SurfaceTopology::prev(h)})
+          if (curve_[top_.edge(k)])
+            t.end_angle = std::min(
+                t.end_angle,
+                line_angle(dir, detail::sub(m_.vertices[top_.to(k)], m_.vertices[top_.from(k)])));
       finish(w.trace, Trace::End::Curve, -1);
       return false;
     }
@@ -353,6 +367,8 @@ bool Tracer::arrive(Walker& w, const SurfacePoint& q, const Vec3& qpos, int face
   }
   // On an edge: cross it, unless it is a curve.
   if (curve_[q.id]) {
+    const int e = top_.edge_half_edge(q.id);
+    t.end_angle = line_angle(dir, detail::sub(m_.vertices[top_.to(e)], m_.vertices[top_.from(e)]));
     finish(w.trace, Trace::End::Curve, -1);
     return false;
   }
@@ -414,13 +430,18 @@ bool Tracer::move_in_face(Walker& w, const SurfacePoint& from, const Vec3& from_
     return false;
   }
   SurfacePoint q;
-  if (best_t < options_.snap)
+  // Snap to a vertex near the crossing, but not to a singularity this trace is not paired
+  // with: arriving at one off its separatrices' directions would split one of its sectors in
+  // two corners; passing close by, the trace meets a separatrix there instead.
+  const auto snaps_to = [&](int v) { return !start_vertex_[v] || v == w.target; };
+  if (best_t < options_.snap && snaps_to(top_.from(best_h))) {
     q = SurfacePoint::at_vertex(top_.from(best_h));
-  else if (best_t > 1 - options_.snap)
+  } else if (best_t > 1 - options_.snap && snaps_to(top_.to(best_h))) {
     q = SurfacePoint::at_vertex(top_.to(best_h));
-  else {
+  } else {
     const int e = top_.edge(best_h);
-    q = SurfacePoint::on_edge(e, top_.edge_half_edge(e) == best_h ? best_t : 1 - best_t);
+    const double t = std::clamp(best_t, 1e-6, 1 - 1e-6);
+    q = SurfacePoint::on_edge(e, top_.edge_half_edge(e) == best_h ? t : 1 - t);
   }
   if (from.kind == SurfacePoint::Kind::Vertex && q.kind == SurfacePoint::Kind::Vertex &&
       q.id == from.id) {
@@ -438,6 +459,7 @@ bool Tracer::draw(Walker& w, int f, const SurfacePoint& from, const Vec3& from_p
   int other = -1;
   const double s = first_hit(f, w.trace, from_pos, qpos, hit, other);
   if (s >= 0 && s < reach) {
+    traces_[w.trace].end_angle = line_angle(detail::sub(qpos, from_pos), hit_direction_);
     // A hit right where it stands (another trace ended here, head on): stop without a step.
     if (s * len > 1e-9 * face_scale(f)) {
       traces_[w.trace].points.push_back(hit);
@@ -464,14 +486,16 @@ bool Tracer::move_along_edge(Walker& w, int h) {
   SurfacePoint hit;
   int other = -1;
   double s = first_hit(h / 3, w.trace, pv, pu, hit, other);
+  Vec3 met = hit_direction_;
   const int g = top_.opposite(h);
   if (g >= 0) {
     SurfacePoint hit2;
     int other2 = -1;
     const double s2 = first_hit(g / 3, w.trace, pv, pu, hit2, other2);
-    if (s2 >= 0 && (s < 0 || s2 < s)) s = s2, hit = hit2, other = other2;
+    if (s2 >= 0 && (s < 0 || s2 < s)) s = s2, hit = hit2, other = other2, met = hit_direction_;
   }
   if (s >= 0) {
+    traces_[w.trace].end_angle = line_angle(detail::sub(pu, pv), met);
     if (s * detail::norm(detail::sub(pu, pv)) > 1e-9 * face_scale(h / 3)) {
       traces_[w.trace].points.push_back(hit);
       w.length += s * detail::norm(detail::sub(pu, pv));
@@ -677,12 +701,15 @@ MotorcycleGraph Tracer::run() {
     skip[v].assign(starts[v].size(), false);
   }
   if (options_.pair_singularities) pair_separatrices(starts, target, skip);
+  for (const auto& [v, i] : options_.banned)
+    if (v >= 0 && v < V && i >= 0 && i < static_cast<int>(skip[v].size())) skip[v][i] = true;
   for (int v = 0; v < V; ++v)
     for (size_t i = 0; i < starts[v].size(); ++i) {
       if (skip[v][i]) continue;
       const Leave& l = starts[v][i];
       Trace t;
       t.start_vertex = v;
+      t.start_way = static_cast<int>(i);
       t.points.push_back(SurfacePoint::at_vertex(v));
       traces_.push_back(t);
       Walker w;

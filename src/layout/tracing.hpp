@@ -18,6 +18,8 @@
 // along an edge.
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <vector>
 
 #include "bimdf/layout/cross_field.hpp"
@@ -42,13 +44,21 @@ struct TraceOptions {
   // Regular interior vertices to trace all four directions from, as if they were singular:
   // what cuts a patch that the separatrices left as an annulus or worse (generate.cpp).
   std::vector<int> seeds;
+  // Separatrices not to trace: (start vertex, way), as Trace::start_vertex, start_way number
+  // them (the numbering depends only on the mesh, the field and the seeds).
+  std::vector<std::array<int, 2>> banned;
 };
 
 struct Trace {
   enum class End { Curve, Trace, Singularity, Unfinished };
   std::vector<SurfacePoint> points;  // from its start vertex to its end
   int start_vertex = -1;
+  int start_way = -1;  // which of its start vertex's ways (TraceOptions::banned numbering)
   End end = End::Unfinished;
+  // End::Trace, End::Curve: the angle between its last piece and the line it stopped at (0 to
+  // π/2). Near 0 it ran into a line of its own family: the two are one line of the layout, and
+  // the wedge between them would be a patch with a cusp.
+  double end_angle = M_PI / 2;
   int end_trace = -1;  // End::Trace: the trace it stopped at (itself for a loop)
   double length = 0;
 };

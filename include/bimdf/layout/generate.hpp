@@ -27,6 +27,10 @@ struct LayoutOptions {
   double max_trace_length = 4;
   // Rounds of seeding patches that are not disks (each round traces everything again).
   int max_seed_rounds = 3;
+  // Separatrices ending on a line at less than this angle (degrees) are not traced (see
+  // tracing.hpp, Trace::end_angle), over up to max_ban_rounds tracings. 0: all are traced.
+  double shallow_angle_deg = 30;
+  int max_ban_rounds = 6;
 };
 
 // One progress report (LayoutOptions' caller decides what to show): a stage has just ended.
@@ -43,8 +47,10 @@ struct GeneratedLayout {
   int traces = 0;          // kept
   int removed_traces = 0;  // unfinished, or ending on one that was removed
   int adjusted_patches = 0;
-  int seeds = 0;  // regular vertices traced from to cut patches that were not disks  // patches
-                  // given 3 or 6 corners where they had fewer or more
+  int seeds = 0;
+  int banned_traces = 0;  // separatrices not traced: they ended at a shallow angle  // regular
+                          // vertices traced from to cut patches that were not disks  // patches
+                          // given 3 or 6 corners where they had fewer or more
   double time_field_s = 0, time_trace_s = 0, time_cut_s = 0, time_patches_s = 0;
 };
 
