@@ -225,9 +225,12 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
       graph = trace_motorcycle_graph(top, frames, field, out.indices.quarter_index, curve, trace);
       if (ban_round == options.max_ban_rounds) break;
       size_t before = trace.banned.size();
+      // Seeds' traces are there to cut a patch open: they stay, however they end (around a
+      // tube the two halves of a loop meet head on).
       for (const Trace& tr : graph.traces)
         if ((tr.end == Trace::End::Trace || tr.end == Trace::End::Curve) &&
-            tr.end_angle < options.shallow_angle_deg * M_PI / 180)
+            tr.end_angle < options.shallow_angle_deg * M_PI / 180 &&
+            std::find(trace.seeds.begin(), trace.seeds.end(), tr.start_vertex) == trace.seeds.end())
           trace.banned.push_back({tr.start_vertex, tr.start_way});
       if (trace.banned.size() == before) break;
     }

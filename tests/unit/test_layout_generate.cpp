@@ -76,6 +76,26 @@ TEST(LayoutGenerate, SquareIsOnePatchAndSphereIsCutAlongItsSeparatrices) {
   EXPECT_GE(g.layout.charts.size(), 6u);
 }
 
+TEST(LayoutGenerate, CylinderAndTorusAreCutOpenBySeeds) {
+  // No singularity, so no separatrix: the one patch each would be an annulus (cylinder) or a
+  // torus; seeds traced in all four directions cut them into disks (the cylinder's into quads).
+  const TriangleMesh cylinder = test::cylinder(2, 32, 10);
+  const layout::GeneratedLayout c = make(cylinder);
+  expect_valid(cylinder, c);
+  EXPECT_TRUE(c.indices.singularities.empty());
+  EXPECT_GT(c.seeds, 0);
+  EXPECT_GE(c.layout.charts.size(), 2u);
+  for (const quant::Chart& chart : c.layout.charts) EXPECT_EQ(chart.valence(), 4);
+  const TriangleMesh torus = test::torus(3, 1, 48, 16);
+  const layout::GeneratedLayout t = make(torus);
+  expect_valid(torus, t);
+  EXPECT_TRUE(t.indices.singularities.empty());
+  EXPECT_GT(t.seeds, 0);
+  // Every chart a disk with 3–6 corners (expect_valid); not yet all quads: the seeds' loops
+  // around the tube meet head on a little apart (docs/standalone_remesher.md).
+  EXPECT_GE(t.layout.charts.size(), 2u);
+}
+
 TEST(LayoutGenerate, SeveralPiecesAndQuadwildFilesReadBack) {
   const TriangleMesh mesh = test::combine(test::cube(3), test::square(1, 4), 4);
   const layout::GeneratedLayout g = make(mesh);
