@@ -312,10 +312,7 @@ FieldIndices field_indices(const TriangleMesh& mesh, const CrossField& field) {
     double turn = 0, angles = 0;
     for (size_t j = 0; j < ring.size(); ++j) {
       const int h = ring[j];
-      const Vec3 a = edge_vector(top, h),
-                 b = detail::sub(mesh.vertices[top.from(SurfaceTopology::prev(h))],
-                                 mesh.vertices[v]);
-      angles += std::atan2(detail::norm(detail::cross(a, b)), detail::dot(a, b));
+      angles += top.corner_angle(h);
       const int p = SurfaceTopology::prev(h), e = top.edge(p);
       if (top.opposite(p) >= 0) {
         turn += top.edge_half_edge(e) == p ? jump[e] : -jump[e];

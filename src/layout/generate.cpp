@@ -154,6 +154,7 @@ std::vector<int> seeds_for_non_disks(const SurfaceTopology& cut, const Patches& 
 // regular), and the T-junctions: a vertex where exactly one trace ends, no trace starts, and
 // the ending trace is not all that passes (another trace goes through, or a curve).
 CornerHints corner_hints(const SurfaceTopology& cut_top, const CutMesh& cut,
+                         const std::map<std::pair<int, int>, int>& edge_of,
                          const std::vector<Trace>& traces, const std::vector<int>& quarter_index,
                          int input_vertices) {
   const int V = cut.mesh.num_vertices();
@@ -164,11 +165,6 @@ CornerHints corner_hints(const SurfaceTopology& cut_top, const CutMesh& cut,
         (cut_top.on_border(v) ? 2 : 4) - (v < input_vertices ? quarter_index[v] : 0);
   hints.ending_edge.assign(V, -1);
   std::vector<int> ends(V, 0), starts(V, 0), last(V, -1);
-  std::map<std::pair<int, int>, int> edge_of;
-  for (int e = 0; e < cut_top.num_edges(); ++e) {
-    const int h = cut_top.edge_half_edge(e);
-    edge_of[edge_key(cut_top.from(h), cut_top.to(h))] = e;
-  }
   for (size_t i = 0; i < traces.size() && i < cut.polyline_vertices.size(); ++i) {
     const std::vector<int>& chain = cut.polyline_vertices[i];
     if (chain.size() < 2) continue;
@@ -298,7 +294,7 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
     }
     patches = label_patches(
         cut_top, border,
-        corner_hints(cut_top, cut, graph.traces, out.indices.quarter_index, mesh.num_vertices()));
+        corner_hints(cut_top, cut, edge_of, graph.traces, out.indices.quarter_index, mesh.num_vertices()));
     const std::vector<int> seeds =
         seeds_for_non_disks(cut_top, patches, mesh.num_vertices(), out.indices.quarter_index);
     if (seeds.empty() || round == options.max_seed_rounds) {

@@ -5,20 +5,8 @@
 #include <cmath>
 #include <map>
 
-#include "mesh/vec3.hpp"
 
 namespace bimdf::layout {
-namespace {
-
-double corner_angle(const SurfaceTopology& top, int h) {
-  const TriangleMesh& m = top.mesh();
-  const int v = top.from(h);
-  const detail::Vec3 a = detail::sub(m.vertices[top.to(h)], m.vertices[v]);
-  const detail::Vec3 b = detail::sub(m.vertices[top.from(SurfaceTopology::prev(h))], m.vertices[v]);
-  return std::atan2(detail::norm(detail::cross(a, b)), detail::dot(a, b));
-}
-
-}  // namespace
 
 Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& boundary_edge,
                       const CornerHints& hints) {
@@ -70,7 +58,7 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
   // Total angle around each vertex: a sector's share of it, times the field's quarter turns
   // there, is the sector's turn.
   std::vector<double> total(V, 0);
-  for (int h = 0; h < 3 * F; ++h) total[top.from(h)] += corner_angle(top, h);
+  for (int h = 0; h < 3 * F; ++h) total[top.from(h)] += top.corner_angle(h);
 
   for (int p = 0; p < P; ++p) {
     const int euler = vertices[p] - edges2[p] / 2 + faces[p];
@@ -100,7 +88,7 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
   for (int h = 0; h < 3 * F; ++h) {
     const int p = out.face_patch[h / 3];
     auto it = sector[p].find(top.from(h));
-    if (it != sector[p].end()) it->second.angle += corner_angle(top, h);
+    if (it != sector[p].end()) it->second.angle += top.corner_angle(h);
   }
   for (int p = 0; p < P; ++p) {
     if (!out.problem[p].empty()) continue;

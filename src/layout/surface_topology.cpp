@@ -2,9 +2,11 @@
 // (surface_topology.hpp).
 #include "layout/surface_topology.hpp"
 
+#include <cmath>
 #include <numeric>
 
 #include "bimdf/error.hpp"
+#include "mesh/vec3.hpp"
 
 namespace bimdf::layout {
 
@@ -80,6 +82,13 @@ std::vector<int> SurfaceTopology::outgoing(int v) const {
     if (h == start) break;
   }
   return ring;
+}
+
+double SurfaceTopology::corner_angle(int h) const {
+  const auto& p = mesh_->vertices;
+  const detail::Vec3 a = detail::sub(p[to(h)], p[from(h)]);
+  const detail::Vec3 b = detail::sub(p[from(prev(h))], p[from(h)]);
+  return std::atan2(detail::norm(detail::cross(a, b)), detail::dot(a, b));
 }
 
 }  // namespace bimdf::layout

@@ -39,6 +39,8 @@ class SurfaceTopology {
   std::vector<int> outgoing(int v) const;
   // The half-edge after h around h's origin, counter-clockwise (−1 past the border).
   int rotate_ccw(int h) const { return opposite(prev(h)); }
+  // The angle of h's face at h's origin (between h and its face's previous edge), radians.
+  double corner_angle(int h) const;
 
   // Border loops as half-edges in walking order (each has no opposite; the mesh's faces lie to
   // the left).

@@ -172,11 +172,7 @@ class Tracer {
 
 double Tracer::ring_total(int v) const {
   double total = 0;
-  for (int h : top_.outgoing(v)) {
-    const Vec3 a = detail::sub(m_.vertices[top_.to(h)], m_.vertices[v]);
-    const Vec3 b = detail::sub(m_.vertices[top_.from(SurfaceTopology::prev(h))], m_.vertices[v]);
-    total += std::atan2(detail::norm(detail::cross(a, b)), detail::dot(a, b));
-  }
+  for (int h : top_.outgoing(v)) total += top_.corner_angle(h);
   return total;
 }
 
@@ -190,8 +186,7 @@ std::vector<Leave> Tracer::leaves(int v) const {
   for (size_t j = 0; j < ring.size(); ++j) {
     const int h = ring[j], f = h / 3, p = SurfaceTopology::prev(h);
     const Vec3 a = detail::sub(m_.vertices[top_.to(h)], m_.vertices[v]);
-    const Vec3 b = detail::sub(m_.vertices[top_.from(p)], m_.vertices[v]);
-    const double corner = std::atan2(detail::norm(detail::cross(a, b)), detail::dot(a, b));
+    const double corner = top_.corner_angle(h);
     const double edge_angle = frames_.angle(f, a);
     for (int k = 0; k < 4; ++k) {
       const double phi = theta_[f] + k * kQuarter;
@@ -239,8 +234,7 @@ double Tracer::ring_angle_of(int v, int face, const Vec3& d) const {
   double start = 0;
   for (int h : top_.outgoing(v)) {
     const Vec3 a = detail::sub(m_.vertices[top_.to(h)], m_.vertices[v]);
-    const Vec3 b = detail::sub(m_.vertices[top_.from(SurfaceTopology::prev(h))], m_.vertices[v]);
-    const double corner = std::atan2(detail::norm(detail::cross(a, b)), detail::dot(a, b));
+    const double corner = top_.corner_angle(h);
     if (h / 3 == face) {
       double beta = wrap_2pi(frames_.angle(face, d) - frames_.angle(face, a));
       if (beta > M_PI + corner / 2) beta -= 2 * M_PI;
@@ -256,9 +250,7 @@ double Tracer::ring_angle_of_edge(int v, int other) const {
   double start = 0;
   for (int h : top_.outgoing(v)) {
     if (top_.to(h) == other) return start;
-    const Vec3 a = detail::sub(m_.vertices[top_.to(h)], m_.vertices[v]);
-    const Vec3 b = detail::sub(m_.vertices[top_.from(SurfaceTopology::prev(h))], m_.vertices[v]);
-    start += std::atan2(detail::norm(detail::cross(a, b)), detail::dot(a, b));
+    start += top_.corner_angle(h);
   }
   return start;  // the last edge of a border fan
 }
@@ -570,9 +562,7 @@ void Tracer::start_directions(int v, std::vector<Leave>& out) const {
   double start = 0;
   for (int h : ring) {
     if (curve_[top_.edge(h)]) cuts.push_back(start);
-    const Vec3 a = detail::sub(m_.vertices[top_.to(h)], m_.vertices[v]);
-    const Vec3 b = detail::sub(m_.vertices[top_.from(SurfaceTopology::prev(h))], m_.vertices[v]);
-    start += std::atan2(detail::norm(detail::cross(a, b)), detail::dot(a, b));
+    start += top_.corner_angle(h);
   }
   const double total = start;
   if (top_.on_border(v)) cuts.push_back(total);  // the fan's last (border) edge
