@@ -161,6 +161,7 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
     << g.removed_traces << " removed), " << g.layout.charts.size() << " patches on "
     << g.layout.mesh.num_faces() << " triangles\n";
   out.time["field_s"] = g.time_field_s;
+  out.time["parametrization_s"] = g.time_parametrization_s;
   out.time["trace_s"] = g.time_trace_s;
   out.time["cut_s"] = g.time_cut_s;
   out.time["patches_s"] = g.time_patches_s;

@@ -13,6 +13,7 @@
 #include "layout/feature_flags.hpp"
 #include "layout/mesh_cutting.hpp"
 #include "layout/patches.hpp"
+#include "layout/seamless.hpp"
 #include "layout/surface_topology.hpp"
 #include "layout/tracing.hpp"
 
@@ -35,8 +36,12 @@ int drop_dangling(std::vector<Trace>& traces) {
     for (size_t i = 0; i < traces.size(); ++i) {
       if (removed[i]) continue;
       const Trace& t = traces[i];
-      const bool dangling = t.end == Trace::End::Unfinished ||
-                            (t.end_trace >= 0 && removed[t.end_trace]) || t.points.size() < 2;
+      // A trace that ends at a singularity keeps its end, whatever becomes of the trace that
+      // passed there first; one that ends on a trace loses it with that trace.
+      const bool dangling =
+          t.end == Trace::End::Unfinished ||
+          (t.end == Trace::End::Trace && t.end_trace >= 0 && removed[t.end_trace]) ||
+          t.points.size() < 2;
       if (dangling) removed[i] = changed = true;
     }
   }
@@ -177,6 +182,24 @@ CornerHints corner_hints(const SurfaceTopology& cut_top, const CutMesh& cut,
   return hints;
 }
 
+// Per half-edge of the cut mesh: its face's angle at its origin in the parameter plane, in
+// quarter turns (CornerHints::parameter_quarters); negative in a folded face.
+std::vector<double> parameter_quarters(const SurfaceTopology& cut_top, const CutMesh& cut,
+                                       const SeamlessMap& map) {
+  const TriangleMesh& m = cut.mesh;
+  std::vector<double> out(3 * m.num_faces());
+  for (int h = 0; h < 3 * m.num_faces(); ++h) {
+    const auto& g = map.gradient[cut.parent_face[h / 3]];
+    const detail::Vec3 origin = m.vertices[cut_top.from(h)];
+    const detail::Vec3 x = detail::sub(m.vertices[cut_top.to(h)], origin);
+    const detail::Vec3 y = detail::sub(m.vertices[cut_top.from(SurfaceTopology::prev(h))], origin);
+    const double xu = detail::dot(g[0], x), xv = detail::dot(g[1], x);
+    const double yu = detail::dot(g[0], y), yv = detail::dot(g[1], y);
+    out[h] = std::atan2(xu * yv - xv * yu, xu * yu + xv * yv) / (M_PI / 2);
+  }
+  return out;
+}
+
 }  // namespace
 
 GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
@@ -202,6 +225,25 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
                         std::to_string(out.indices.quarter_index_sum) + "/4");
   }
 
+  FaceWays ways;
+  SeamlessMap map;  // empty unless traced along
+  if (options.trace_parametrization) {
+    t = std::chrono::steady_clock::now();
+    map = seamless_parametrization(top, frames, field, curve);
+    ways = face_ways(frames, map.iso_direction);
+    out.folded_faces = map.folded_faces;
+    out.time_parametrization_s = since(t);
+    std::ostringstream detail;
+    detail << map.folded_faces << " folded faces, mean distortion " << map.mean_distortion
+           << ", closure " << map.max_closure;
+    report("parametrization", detail.str());
+  } else {
+    std::vector<std::array<detail::Vec3, 2>> cross(mesh.num_faces());
+    for (int f = 0; f < mesh.num_faces(); ++f)
+      cross[f] = {field.direction[f], detail::cross(frames.normal[f], field.direction[f])};
+    ways = face_ways(frames, cross);
+  }
+
   TraceOptions trace;
   trace.snap = options.snap;
   trace.max_length = options.max_trace_length;
@@ -218,7 +260,7 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
     // drifted: it is not traced, and everything is traced again without it (which may let
     // other separatrices run on), up to `max_ban_rounds` times.
     for (int ban_round = 0;; ++ban_round) {
-      graph = trace_motorcycle_graph(top, frames, field, out.indices.quarter_index, curve, trace);
+      graph = trace_motorcycle_graph(top, frames, ways, out.indices.quarter_index, curve, trace);
       if (ban_round == options.max_ban_rounds) break;
       size_t before = trace.banned.size();
       // Seeds' traces are there to cut a patch open: they stay, however they end (around a
@@ -292,9 +334,10 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
       border[e] = true;
       if (top.opposite(top.edge_half_edge(input)) >= 0) sharp_pieces.push_back({a, b});
     }
-    patches = label_patches(
-        cut_top, border,
-        corner_hints(cut_top, cut, edge_of, graph.traces, out.indices.quarter_index, mesh.num_vertices()));
+    CornerHints hints = corner_hints(cut_top, cut, edge_of, graph.traces, out.indices.quarter_index,
+                                     mesh.num_vertices());
+    if (!map.gradient.empty()) hints.parameter_quarters = parameter_quarters(cut_top, cut, map);
+    patches = label_patches(cut_top, border, hints);
     const std::vector<int> seeds =
         seeds_for_non_disks(cut_top, patches, mesh.num_vertices(), out.indices.quarter_index);
     if (seeds.empty() || round == options.max_seed_rounds) {

@@ -76,7 +76,7 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
   // Each disk patch meets each of its boundary vertices in one sector: its angle there, and
   // the two boundary edges that bound it (leaving and reaching the vertex along its border).
   struct Sector {
-    double angle = 0;
+    double angle = 0, parameter_quarters = 0;
     int edge_out = -1, edge_in = -1;
   };
   std::vector<std::map<int, Sector>> sector(P);
@@ -88,13 +88,18 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
   for (int h = 0; h < 3 * F; ++h) {
     const int p = out.face_patch[h / 3];
     auto it = sector[p].find(top.from(h));
-    if (it != sector[p].end()) it->second.angle += top.corner_angle(h);
+    if (it == sector[p].end()) continue;
+    it->second.angle += top.corner_angle(h);
+    if (!hints.parameter_quarters.empty())
+      it->second.parameter_quarters += hints.parameter_quarters[h];
   }
   for (int p = 0; p < P; ++p) {
     if (!out.problem[p].empty()) continue;
     std::vector<std::pair<double, int>> by_turn;  // the sector in quarter turns, vertex
     for (const auto& [v, sec] : sector[p]) {
-      double quarters = sec.angle / total[v] * hints.field_quarters[v];
+      double quarters = hints.parameter_quarters.empty()
+                            ? sec.angle / total[v] * hints.field_quarters[v]
+                            : sec.parameter_quarters;
       const int end = hints.ending_edge[v];
       if (end >= 0) quarters = end == sec.edge_out || end == sec.edge_in ? 1 : 2;
       by_turn.push_back({quarters, v});

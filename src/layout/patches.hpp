@@ -27,6 +27,10 @@ struct CornerHints {
   // (a T-junction: the two patches beside that edge have a corner here, the one across the
   // line has none, whatever the angles); −1 elsewhere.
   std::vector<int> ending_edge;
+  // Per half-edge h (when not empty): the angle of h's face at h's origin in the parameter
+  // plane the traces followed (seamless.hpp), in quarter turns. A sector's turn is then their
+  // sum, which is exact where traces are iso-lines, instead of its share of the field's turns.
+  std::vector<double> parameter_quarters;
 };
 
 // Floods faces across every edge that is not a boundary (`boundary_edge` per edge of `top`:

@@ -48,7 +48,7 @@ struct Leave {
 
 class Tracer {
  public:
-  Tracer(const SurfaceTopology& top, const FaceFrames& frames, const CrossField& field,
+  Tracer(const SurfaceTopology& top, const FaceFrames& frames, const FaceWays& ways,
          const std::vector<int>& quarter_index, const std::vector<bool>& curve_edge,
          const TraceOptions& options)
       : top_(top),
@@ -56,10 +56,9 @@ class Tracer {
         quarter_index_(quarter_index),
         curve_(curve_edge),
         options_(options),
-        m_(top.mesh()) {
+        m_(top.mesh()),
+        ways_(ways) {
     const int F = m_.num_faces(), V = m_.num_vertices();
-    theta_.resize(F);
-    for (int f = 0; f < F; ++f) theta_[f] = frames.angle(f, field.direction[f]);
     faces_.resize(F);
     owner_.assign(V, -1);
     is_seed_.assign(V, false);
@@ -94,8 +93,8 @@ class Tracer {
     int face = -1;
     double angle = 0;
     double back = 0;
-    int first_edge = -1;  // the first step along this edge (a start along an edge)
     int target = -1;      // a singularity it is paired with: it ends there when it gets close
+    int partner_way = -1;  // the target's separatrix it stands for (not traced from there)
     bool operator<(const Walker& o) const {
       return length != o.length ? length > o.length : trace > o.trace;  // min-heap
     }
@@ -145,7 +144,7 @@ class Tracer {
   const std::vector<bool>& curve_;
   const TraceOptions& options_;
   const TriangleMesh& m_;
-  std::vector<double> theta_;
+  const FaceWays& ways_;
   std::vector<std::vector<Segment>> faces_;
   std::vector<int> owner_;  // per vertex: a trace through it, −1
   std::vector<bool> curve_vertex_;
@@ -167,7 +166,8 @@ class Tracer {
   Vec3 leave_vector(int v, const Leave& l) const;
   void pair_separatrices(const std::vector<std::vector<Leave>>& starts,
                          std::vector<std::vector<int>>& target,
-                         std::vector<std::vector<bool>>& skip);
+                         std::vector<std::vector<bool>>& skip,
+                         std::vector<std::vector<int>>& partner);
 };
 
 double Tracer::ring_total(int v) const {
@@ -189,7 +189,7 @@ std::vector<Leave> Tracer::leaves(int v) const {
     const double corner = top_.corner_angle(h);
     const double edge_angle = frames_.angle(f, a);
     for (int k = 0; k < 4; ++k) {
-      const double phi = theta_[f] + k * kQuarter;
+      const double phi = ways_[f][k];
       double beta = wrap_2pi(phi - edge_angle);
       if (beta > M_PI + corner / 2) beta -= 2 * M_PI;  // just before the wedge: negative
       if (beta < -tolerance || beta > corner + tolerance) continue;
@@ -376,7 +376,7 @@ bool Tracer::arrive(Walker& w, const SurfacePoint& q, const Vec3& qpos, int face
       frames_.angle(g / 3, detail::sub(m_.vertices[top_.to(g)], m_.vertices[top_.from(g)]));
   double best = 1e9, chosen = 0;
   for (int k = 0; k < 4; ++k) {
-    const double phi = theta_[g / 3] + k * kQuarter;
+    const double phi = ways_[g / 3][k];
     if (std::sin(phi - into) <= 1e-6) continue;
     const double turn = std::fabs(std::remainder(phi - transported, 2 * M_PI));
     if (turn < best) best = turn, chosen = phi;
@@ -626,7 +626,8 @@ bool Tracer::observe(const Walker& w, int f, const Vec3& p, const Vec3& q) {
 // first singularity to the second (`target`), and the second's separatrix is not traced.
 void Tracer::pair_separatrices(const std::vector<std::vector<Leave>>& starts,
                                std::vector<std::vector<int>>& target,
-                               std::vector<std::vector<bool>>& skip) {
+                               std::vector<std::vector<bool>>& skip,
+                               std::vector<std::vector<int>>& partner) {
   struct Pair {
     double length;
     int from, from_leave, to, to_leave;
@@ -665,6 +666,7 @@ void Tracer::pair_separatrices(const std::vector<std::vector<Leave>>& starts,
     if (used[p.from][p.from_leave] || used[p.to][p.to_leave]) continue;
     used[p.from][p.from_leave] = used[p.to][p.to_leave] = true;
     target[p.from][p.from_leave] = p.to;
+    partner[p.from][p.from_leave] = p.to_leave;
     skip[p.to][p.to_leave] = true;
   }
 }
@@ -685,59 +687,75 @@ MotorcycleGraph Tracer::run() {
   leave_vectors_.assign(V, {});
   std::vector<std::vector<int>> target(V);
   std::vector<std::vector<bool>> skip(V);
+  std::vector<std::vector<int>> partner(V);
   for (int v = 0; v < V; ++v) {
+    partner[v].assign(starts[v].size(), -1);
     for (const Leave& l : starts[v]) leave_vectors_[v].push_back(leave_vector(v, l));
     target[v].assign(starts[v].size(), -1);
     skip[v].assign(starts[v].size(), false);
   }
-  if (options_.pair_singularities) pair_separatrices(starts, target, skip);
+  if (options_.pair_singularities) pair_separatrices(starts, target, skip, partner);
   for (const auto& [v, i] : options_.banned)
     if (v >= 0 && v < V && i >= 0 && i < static_cast<int>(skip[v].size())) skip[v][i] = true;
+  // Starts separatrix i of v: its trace, and its first step along the chosen way. False when
+  // that step already ends it.
+  const auto start = [&](int v, int i, Walker& w) {
+    const Leave& l = starts[v][i];
+    Trace t;
+    t.start_vertex = v;
+    t.start_way = i;
+    t.points.push_back(SurfacePoint::at_vertex(v));
+    traces_.push_back(t);
+    w = Walker{};
+    w.trace = static_cast<int>(traces_.size()) - 1;
+    if (owner_[v] < 0) owner_[v] = w.trace;
+    w.face = l.face;
+    w.angle = l.angle;
+    w.target = target[v][i];
+    w.partner_way = partner[v][i];
+    if (w.face >= 0) return move_in_face(w, SurfacePoint::at_vertex(v), m_.vertices[v]);
+    if (l.edge_half_edge < 0) {
+      finish(w.trace, Trace::End::Curve, -1);
+      return false;
+    }
+    return move_along_edge(w, l.edge_half_edge);
+  };
+  // A paired separatrix that stopped before its singularity leaves the one it stood for
+  // untraced: that one is traced after all.
+  const auto ended = [&](Walker w) {
+    while (w.target >= 0) {
+      const SurfacePoint& last = traces_[w.trace].points.back();
+      if (last.kind == SurfacePoint::Kind::Vertex && last.id == w.target) return;
+      Walker next;
+      if (start(w.target, w.partner_way, next)) {
+        queue.push(next);
+        return;
+      }
+      w = next;
+    }
+  };
+  // Every start's first step is taken before any trace goes on, in start order.
   for (int v = 0; v < V; ++v)
     for (size_t i = 0; i < starts[v].size(); ++i) {
       if (skip[v][i]) continue;
-      const Leave& l = starts[v][i];
-      Trace t;
-      t.start_vertex = v;
-      t.start_way = static_cast<int>(i);
-      t.points.push_back(SurfacePoint::at_vertex(v));
-      traces_.push_back(t);
       Walker w;
-      w.trace = static_cast<int>(traces_.size()) - 1;
-      if (owner_[v] < 0) owner_[v] = w.trace;
-      // The first step is taken below so that the walker's way is the chosen one.
-      w.face = l.face;
-      w.angle = l.angle;
-      w.first_edge = l.edge_half_edge;
-      w.target = target[v][i];
-      queue.push(w);
+      if (start(v, static_cast<int>(i), w))
+        queue.push(w);
+      else
+        ended(w);
     }
-  // First steps: out of the start vertex along the chosen way.
-  std::vector<Walker> first;
-  while (!queue.empty()) first.push_back(queue.top()), queue.pop();
-  for (Walker& w : first) {
-    const int v = traces_[w.trace].start_vertex;
-    bool going;
-    if (w.face >= 0) {
-      going = move_in_face(w, SurfacePoint::at_vertex(v), m_.vertices[v]);
-    } else {
-      const int h = w.first_edge;
-      if (h < 0) {
-        finish(w.trace, Trace::End::Curve, -1);
-        continue;
-      }
-      going = move_along_edge(w, h);
-    }
-    if (going) queue.push(w);
-  }
   while (!queue.empty()) {
     Walker w = queue.top();
     queue.pop();
     if (w.length >= max_length_) {
       finish(w.trace, Trace::End::Unfinished, -1);
+      ended(w);
       continue;
     }
-    if (advance(w)) queue.push(w);
+    if (advance(w))
+      queue.push(w);
+    else
+      ended(w);
   }
   graph.traces = std::move(traces_);
   return graph;
@@ -745,13 +763,24 @@ MotorcycleGraph Tracer::run() {
 
 }  // namespace
 
+FaceWays face_ways(const FaceFrames& frames,
+                   const std::vector<std::array<detail::Vec3, 2>>& directions) {
+  FaceWays ways(directions.size());
+  for (size_t f = 0; f < directions.size(); ++f) {
+    const int face = static_cast<int>(f);
+    const double w0 = frames.angle(face, directions[f][0]);
+    const double w1 = frames.angle(face, directions[f][1]);
+    ways[f] = {w0, w1, w0 + M_PI, w1 + M_PI};
+  }
+  return ways;
+}
+
 MotorcycleGraph trace_motorcycle_graph(const SurfaceTopology& top, const FaceFrames& frames,
-                                       const CrossField& field,
-                                       const std::vector<int>& quarter_index,
+                                       const FaceWays& ways, const std::vector<int>& quarter_index,
                                        const std::vector<bool>& curve_edge,
                                        const TraceOptions& options) {
   if (top.mesh().num_faces() == 0) return {};
-  Tracer tracer(top, frames, field, quarter_index, curve_edge, options);
+  Tracer tracer(top, frames, ways, quarter_index, curve_edge, options);
   return tracer.run();
 }
 

@@ -10,12 +10,16 @@
 // lockstep — always advancing the shortest trace — so that which of two traces stops at the
 // other does not depend on the order they were started in.
 //
-// Tracing on a per-face constant field: inside a face a trace is a straight segment along one
-// of the face's four directions; crossing an edge it takes the next face's direction closest to
-// its own transported across the edge. Crossings within `snap` of a mesh vertex go through the
-// vertex (no slivers for the cut); at a vertex the trace continues along the field direction
-// closest to straight on (half the vertex's total angle from where it came), into a face or
-// along an edge.
+// Tracing on per-face constant ways (FaceWays): inside a face a trace is a straight segment
+// along one of the face's four ways; crossing an edge it takes the next face's way closest to
+// its own transported across the edge. With a parametrization's ways that is its iso-line,
+// exactly. Crossings within `snap` of a mesh vertex go through the vertex; at a vertex the trace
+// continues along the way closest to straight on (half the vertex's total angle from where it
+// came), into a face or along an edge.
+//
+// Pairing: separatrices that run into another singularity head on are traced once, from one
+// to the other; if that trace stops before it gets there, the other singularity's separatrix
+// it stood for is traced after all (no singularity loses a separatrix).
 #pragma once
 
 #include <array>
@@ -29,10 +33,21 @@
 
 namespace bimdf::layout {
 
+// Per face, the angles (in the face's frame, FaceFrames::angle) of the four ways a trace may go
+// in it: way k + 2 is opposite way k, way 1 about a quarter turn counter-clockwise from way 0.
+// A cross field's ways are one angle plus k quarter turns; a parametrization's are its
+// iso-lines' directions ±∂x/∂u, ±∂x/∂v, which need not be orthogonal.
+using FaceWays = std::vector<std::array<double, 4>>;
+
+// The ways of per-face direction pairs (way 0, way 1), e.g. (d, n × d) for a cross field's
+// direction d, or SeamlessMap::iso_direction.
+FaceWays face_ways(const FaceFrames& frames,
+                   const std::vector<std::array<detail::Vec3, 2>>& directions);
+
 struct TraceOptions {
   // Edge crossings closer than this fraction of the edge's length to an end go through that
   // vertex instead. In [0, 0.5).
-  double snap = 0.1;
+  double snap = 1e-4;
   // A trace longer than this many bounding-box diagonals stops unfinished (a streamline that
   // winds around a handle without meeting anything).
   double max_length = 4;
@@ -71,8 +86,7 @@ struct MotorcycleGraph {
 // Where separatrices start, from the field's indices and the curve edges (features and border,
 // per edge of `top`); the traces' ends. `quarter_index` per vertex (field_indices).
 MotorcycleGraph trace_motorcycle_graph(const SurfaceTopology& top, const FaceFrames& frames,
-                                       const CrossField& field,
-                                       const std::vector<int>& quarter_index,
+                                       const FaceWays& ways, const std::vector<int>& quarter_index,
                                        const std::vector<bool>& curve_edge,
                                        const TraceOptions& options);
 

@@ -8,6 +8,9 @@
 // separatrix once, as a motorcycle graph, which leaves quad patches with T-junctions and the
 // singularities at patch corners. No selection is needed, every singularity of the field is one
 // of the mesh's (no pattern adds any), and the quantizer's subsides already handle T-junctions.
+// The separatrices are iso-lines of a seamless parametrization fitted to the field
+// (layout/seamless.hpp), not the field's streamlines: streamlines of a field with curl drift
+// past each other and leave 3-, 5- and 6-sided patches, each a singularity the field lacks.
 #pragma once
 
 #include <functional>
@@ -21,15 +24,21 @@ namespace bimdf::layout {
 
 struct LayoutOptions {
   CrossFieldOptions field;
+  // Trace the iso-lines of a seamless parametrization fitted to the field (layout/seamless.hpp)
+  // rather than the field's own streamlines, which drift apart where the field has curl.
+  bool trace_parametrization = true;
   // Trace crossings within this fraction of an edge from a vertex pass through the vertex.
-  double snap = 0.1;
+  // Snapping moves a trace off its iso-line, so it is kept tiny when tracing the
+  // parametrization (0.1 suited the field's streamlines, which drift anyway).
+  double snap = 1e-4;
   // Traces longer than this many bounding-box diagonals are given up (and removed).
   double max_trace_length = 4;
   // Rounds of seeding patches that are not disks (each round traces everything again).
   int max_seed_rounds = 3;
   // Separatrices ending on a line at less than this angle (degrees) are not traced (see
-  // tracing.hpp, Trace::end_angle), over up to max_ban_rounds tracings. 0: all are traced.
-  double shallow_angle_deg = 30;
+  // tracing.hpp, Trace::end_angle), over up to max_ban_rounds tracings. 0: all are traced —
+  // the default, since iso-lines of one family do not meet (30 suited the streamlines).
+  double shallow_angle_deg = 0;
   int max_ban_rounds = 6;
 };
 
@@ -46,12 +55,12 @@ struct GeneratedLayout {
   int trace_starts = 0;    // vertices separatrices start from
   int traces = 0;          // kept
   int removed_traces = 0;  // unfinished, or ending on one that was removed
-  int adjusted_patches = 0;
-  int seeds = 0;
-  int banned_traces = 0;  // separatrices not traced: they ended at a shallow angle  // regular
-                          // vertices traced from to cut patches that were not disks  // patches
-                          // given 3 or 6 corners where they had fewer or more
-  double time_field_s = 0, time_trace_s = 0, time_cut_s = 0, time_patches_s = 0;
+  int adjusted_patches = 0;  // patches given 3 or 6 corners where they had fewer or more
+  int seeds = 0;             // regular vertices traced from to cut patches that were not disks
+  int banned_traces = 0;     // separatrices not traced: they ended at a shallow angle
+  int folded_faces = 0;      // of the parametrization traced along (trace_parametrization)
+  double time_field_s = 0, time_parametrization_s = 0, time_trace_s = 0, time_cut_s = 0,
+         time_patches_s = 0;
 };
 
 // Builds the layout of `mesh` (prepare_surface's output) with `features` (detect_features or
