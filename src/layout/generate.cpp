@@ -230,22 +230,31 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
   if (options.trace_parametrization) {
     t = std::chrono::steady_clock::now();
     map = seamless_parametrization(top, frames, field, curve);
-    ways = face_ways(frames, map.iso_direction);
     out.folded_faces = map.folded_faces;
     out.time_parametrization_s = since(t);
     std::ostringstream detail;
-    detail << map.folded_faces << " folded faces, mean distortion " << map.mean_distortion
-           << ", closure " << map.max_closure;
+    detail << map.folded_faces << " folded faces, mean distortion " << map.mean_distortion;
+    if (map.folded_faces > options.max_folded_fraction * mesh.num_faces()) {
+      map = SeamlessMap{};
+      detail << ": too many folds, tracing the field's streamlines instead";
+    } else {
+      ways = face_ways(frames, map.iso_direction);
+      out.traced_parametrization = true;
+    }
     report("parametrization", detail.str());
-  } else {
+  }
+  if (!out.traced_parametrization) {
     std::vector<std::array<detail::Vec3, 2>> cross(mesh.num_faces());
     for (int f = 0; f < mesh.num_faces(); ++f)
       cross[f] = {field.direction[f], detail::cross(frames.normal[f], field.direction[f])};
     ways = face_ways(frames, cross);
   }
+  const double snap = out.traced_parametrization ? options.snap : options.streamline_snap;
+  const double shallow_deg =
+      out.traced_parametrization ? options.shallow_angle_deg : options.streamline_shallow_angle_deg;
 
   TraceOptions trace;
-  trace.snap = options.snap;
+  trace.snap = snap;
   trace.max_length = options.max_trace_length;
   CutMesh cut;
   Patches patches;
@@ -267,7 +276,7 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
       // tube the two halves of a loop meet head on).
       for (const Trace& tr : graph.traces)
         if ((tr.end == Trace::End::Trace || tr.end == Trace::End::Curve) &&
-            tr.end_angle < options.shallow_angle_deg * M_PI / 180 &&
+            tr.end_angle < shallow_deg * M_PI / 180 &&
             std::find(trace.seeds.begin(), trace.seeds.end(), tr.start_vertex) == trace.seeds.end())
           trace.banned.push_back({tr.start_vertex, tr.start_way});
       if (trace.banned.size() == before) break;

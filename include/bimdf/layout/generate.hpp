@@ -27,6 +27,13 @@ struct LayoutOptions {
   // Trace the iso-lines of a seamless parametrization fitted to the field (layout/seamless.hpp)
   // rather than the field's own streamlines, which drift apart where the field has curl.
   bool trace_parametrization = true;
+  // ... unless the parametrization folds more than this fraction of the faces (near dense
+  // clusters of singularities and sharp features least squares folds the map): then the
+  // field's streamlines are traced instead, with `streamline_snap` and
+  // `streamline_shallow_angle_deg` in place of snap and shallow_angle_deg.
+  double max_folded_fraction = 0.002;
+  double streamline_snap = 0.1;
+  double streamline_shallow_angle_deg = 30;
   // Trace crossings within this fraction of an edge from a vertex pass through the vertex.
   // Snapping moves a trace off its iso-line, so it is kept tiny when tracing the
   // parametrization (0.1 suited the field's streamlines, which drift anyway).
@@ -58,7 +65,8 @@ struct GeneratedLayout {
   int adjusted_patches = 0;  // patches given 3 or 6 corners where they had fewer or more
   int seeds = 0;             // regular vertices traced from to cut patches that were not disks
   int banned_traces = 0;     // separatrices not traced: they ended at a shallow angle
-  int folded_faces = 0;      // of the parametrization traced along (trace_parametrization)
+  int folded_faces = 0;      // of the parametrization (trace_parametrization)
+  bool traced_parametrization = false;  // false: the field's streamlines were traced
   double time_field_s = 0, time_parametrization_s = 0, time_trace_s = 0, time_cut_s = 0,
          time_patches_s = 0;
 };
