@@ -27,8 +27,8 @@ Mat2 quarter_turns(int k) {
   }
 }
 
-// How the image of half-edge h, seen in its face's cross frame, is made of its edge's unknowns:
-// image = coefficient · (x_e0, x_e1).
+// How the image of half-edge h, seen in its face's cross frame, is made of its edge's two
+// unknowns (x[2e], x[2e + 1]): image = coefficient · (x[2e], x[2e + 1]).
 struct HalfEdgeImage {
   int edge = -1;
   Mat2 coefficient{};
@@ -54,15 +54,15 @@ SeamlessMap seamless_parametrization(const SurfaceTopology& top, const FaceFrame
     return std::array<double, 2>{detail::dot(a[f], x), detail::dot(b[f], x)};
   };
 
-  // Unknowns: two per edge, minus the component across a curve (fixed at zero).
-  std::vector<std::array<int, 2>> unknown(E, {-1, -1});
-  int n = 0;
+  // Unknowns: two per edge. On a curve edge, which component lies across the curve (the
+  // field there is aligned to it, so the edge's image in its frame is close to an axis).
+  const int n = 2 * E;
+  std::vector<int> across(E, -1);
   for (int e = 0; e < E; ++e) {
+    if (!curve_edge[e]) continue;
     const int h = top.edge_half_edge(e);
     const auto c = coords(h / 3, vector_of(h));
-    const int across = std::fabs(c[0]) < std::fabs(c[1]) ? 0 : 1;
-    for (int k = 0; k < 2; ++k)
-      if (!(curve_edge[e] && k == across)) unknown[e][k] = n++;
+    across[e] = std::fabs(c[0]) < std::fabs(c[1]) ? 0 : 1;
   }
   std::vector<HalfEdgeImage> image(3 * F);
   for (int h = 0; h < 3 * F; ++h) {
@@ -108,10 +108,8 @@ SeamlessMap seamless_parametrization(const SurfaceTopology& top, const FaceFrame
     const HalfEdgeImage& im = image[h];
     std::array<double, 2> v{0, 0};
     for (int c = 0; c < 2; ++c) {
-      const int u = unknown[im.edge][c];
-      if (u < 0) continue;
-      v[0] += im.coefficient[0][c] * x[u];
-      v[1] += im.coefficient[1][c] * x[u];
+      v[0] += im.coefficient[0][c] * x[2 * im.edge + c];
+      v[1] += im.coefficient[1][c] * x[2 * im.edge + c];
     }
     return v;
   };
@@ -131,9 +129,8 @@ SeamlessMap seamless_parametrization(const SurfaceTopology& top, const FaceFrame
     const auto add_term = [&](int row, int h, int component, double weight) {
       const HalfEdgeImage& im = image[h];
       for (int c = 0; c < 2; ++c) {
-        const int u = unknown[im.edge][c];
         const double w = weight * im.coefficient[component][c];
-        if (u >= 0 && w != 0) rows.emplace_back(row, u, w);
+        if (w != 0) rows.emplace_back(row, 2 * im.edge + c, w);
       }
     };
     for (int f = 0; f < F; ++f) {
@@ -152,6 +149,16 @@ SeamlessMap seamless_parametrization(const SurfaceTopology& top, const FaceFrame
         rhs.push_back(0);
       }
     }
+    // Curves: the image's component across the curve towards zero, weighted against the fit
+    // (a hard zero folds the map where noisy curves zigzag across the field).
+    for (int e = 0; e < E; ++e) {
+      if (across[e] < 0) continue;
+      const int h = top.edge_half_edge(e), f = h / 3;
+      const double w = options.curve_weight * std::sqrt(frames.area[f] * stiffness[f]) /
+                       detail::norm(vector_of(h));
+      rows.emplace_back(static_cast<int>(rhs.size()), 2 * e + across[e], w);
+      rhs.push_back(0);
+    }
     Eigen::SparseMatrix<double> A(static_cast<Eigen::Index>(rhs.size()), n);
     A.setFromTriplets(rows.begin(), rows.end());
     const Eigen::VectorXd bvec = Eigen::Map<const Eigen::VectorXd>(rhs.data(), rhs.size());
@@ -169,7 +176,7 @@ SeamlessMap seamless_parametrization(const SurfaceTopology& top, const FaceFrame
           std::sqrt(J[0][0] * J[0][0] + J[0][1] * J[0][1] + J[1][0] * J[1][0] + J[1][1] * J[1][1]);
       const double conformal = det > 0 ? frob * frob / (2 * det) : 1e3;  // 1: no shear
       if (conformal > options.stiffen_above) {
-        stiffness[f] *= std::min(1 + (conformal - 1), 10.0);
+        stiffness[f] *= std::min(conformal, 10.0);
         stiffened = true;
       }
     }

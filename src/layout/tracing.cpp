@@ -163,6 +163,13 @@ class Tracer {
     double length = 0;
   } approach_;
   bool observe(const Walker& w, int f, const Vec3& p, const Vec3& q);
+  // A paired walker may step onto its target: at once for another singularity, and only once
+  // it has gone some way for its own start (a seed's loop around a tube, which leaves through
+  // the faces it will come back through).
+  bool may_close(const Walker& w) const {
+    return w.target >= 0 &&
+           (w.target != traces_[w.trace].start_vertex || w.length > 4 * approach_radius_);
+  }
   Vec3 leave_vector(int v, const Leave& l) const;
   void pair_separatrices(const std::vector<std::vector<Leave>>& starts,
                          std::vector<std::vector<int>>& target,
@@ -392,7 +399,7 @@ bool Tracer::arrive(Walker& w, const SurfacePoint& q, const Vec3& qpos, int face
 
 bool Tracer::move_in_face(Walker& w, const SurfacePoint& from, const Vec3& from_pos) {
   const int f = w.face;
-  if (w.target >= 0 && !(from.kind == SurfacePoint::Kind::Vertex && from.id == w.target)) {
+  if (may_close(w) && !(from.kind == SurfacePoint::Kind::Vertex && from.id == w.target)) {
     const auto& t = m_.faces[f];
     if (t[0] == w.target || t[1] == w.target || t[2] == w.target) {
       // Paired: the last step goes straight to the singularity (whose own separatrices
@@ -513,7 +520,7 @@ bool Tracer::advance(Walker& w) {
   // At a vertex: to its paired singularity if that is a neighbour, else the way on closest
   // to straight ahead.
   const int v = at.id;
-  if (w.target >= 0)
+  if (may_close(w))
     for (int h : top_.outgoing(v))
       if (top_.to(h) == w.target) return move_along_edge(w, h);
   const std::vector<Leave> ways = leaves(v);
@@ -605,7 +612,11 @@ bool Tracer::observe(const Walker& w, int f, const Vec3& p, const Vec3& q) {
   if (len2 <= 0) return false;
   const Vec3 dir = detail::normalized(d);
   for (int x : m_.faces[f]) {
-    if (!start_vertex_[x] || x == own || quarter_index_[x] == 0 || curve_vertex_[x]) continue;
+    // A seed's two opposite ways are one loop when it closes around a tube: its own start
+    // counts for a seed, once the trace has gone some way.
+    const bool own_loop = x == own && is_seed_[x] && w.length > 4 * approach_radius_;
+    if (!start_vertex_[x] || (x == own && !own_loop) || curve_vertex_[x]) continue;
+    if (quarter_index_[x] == 0 && !is_seed_[x]) continue;
     const double t = std::clamp(detail::dot(detail::sub(m_.vertices[x], p), d) / len2, 0.0, 1.0);
     const Vec3 closest = detail::along(p, t, d);
     if (detail::norm(detail::sub(m_.vertices[x], closest)) > approach_radius_) continue;
@@ -636,7 +647,7 @@ void Tracer::pair_separatrices(const std::vector<std::vector<Leave>>& starts,
   free_ = true;
   const int V = m_.num_vertices();
   for (int v = 0; v < V; ++v) {
-    if (quarter_index_[v] == 0 || curve_vertex_[v]) continue;
+    if ((quarter_index_[v] == 0 && !is_seed_[v]) || curve_vertex_[v]) continue;
     for (size_t i = 0; i < starts[v].size(); ++i) {
       const Leave& l = starts[v][i];
       traces_.assign(1, Trace{});
