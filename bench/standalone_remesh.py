@@ -39,8 +39,9 @@ def main():
     os.makedirs(work, exist_ok=True)
     print("| model | triangles | exit | quads | QuadWild | ratio | singular | QuadWild | ratio "
           "| SJ min | SJ mean | SJ p5 | QuadWild min / mean / p5 | inverted | Hausdorff % "
-          "| field | trace | cut | patches | quantize | tessellate | total s |")
-    print("|" + "---|" * 22)
+          "| traced along | field | param. | trace | cut | patches | quantize | tessellate "
+          "| total s |")
+    print("|" + "---|" * 24)
     for name in names:
         bare = os.path.join(work, name + ".obj")
         shutil.copyfile(os.path.join(layouts, name, name + ".obj"), bare)
@@ -56,20 +57,23 @@ def main():
         q = quality[name]
         if code != 0:
             print(f"| {name} | | {code} | | {q['quads']} | | | {q['singular_interior']} | | | | | "
-                  f"{q['msj_min']} / {q['msj_mean']} / {q['msj_p05']} | | | | | | | | | "
+                  f"{q['msj_min']} / {q['msj_mean']} / {q['msj_p05']} | | | | | | | | | | | "
                   f"{wall:.1f} |")
             continue
         j = json.loads(report)
         m, t = j["metrics"], j["time"]
         sj = m["scaled_jacobian"]
         singular = sum(m["interior_singularities"].values())
+        layout = j.get("layout", {})
+        traced = f"{layout.get('traced_along', '')} ({layout.get('folded_faces', '')} folded)"
         tess = sum(t.get(k, 0) for k in ("patterns_s", "mapping_s", "smoothing_s", "polish_s"))
         print(f"| {name} | {j['input']['triangles']} | 0 | {m['faces']} | {q['quads']} | "
               f"{m['faces'] / int(q['quads']):.2f} | {singular} | {q['singular_interior']} | "
               f"{singular / max(1, int(q['singular_interior'])):.2f} | {sj['min']:.4f} | "
               f"{sj['mean']:.4f} | {sj['p5']:.4f} | {q['msj_min']} / {q['msj_mean']} / "
               f"{q['msj_p05']} | {m['inverted']} | {100 * m['hausdorff_relative']:.3f} | "
-              f"{t['field_s']:.2f} | {t['trace_s']:.2f} | {t['cut_s']:.2f} | "
+              f"{traced} | {t['field_s']:.2f} | {t.get('parametrization_s', 0):.2f} | "
+              f"{t['trace_s']:.2f} | {t['cut_s']:.2f} | "
               f"{t['patches_s']:.2f} | {t['quantize_s']:.2f} | {tess:.2f} | {t['total_s']:.1f} |")
         sys.stdout.flush()
     if not a.keep:

@@ -152,14 +152,18 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
   s << "cross field   " << singular << " singularities inside"
     << (valence_text.empty() ? "" : " (" + valence_text + ")") << "; index sum "
     << g.indices.quarter_index_sum / 4 << " = Euler characteristic\n";
-  out.json["layout"] = {{"trace_starts", g.trace_starts},
+  out.json["layout"] = {{"traced_along", g.traced_parametrization ? "parametrization" : "field"},
+                        {"folded_faces", g.folded_faces},
+                        {"trace_starts", g.trace_starts},
                         {"traces", g.traces},
                         {"removed_traces", g.removed_traces},
                         {"triangles", g.layout.mesh.num_faces()},
                         {"patches", g.layout.charts.size()}};
   s << "layout        " << g.traces << " separatrices from " << g.trace_starts << " vertices ("
     << g.removed_traces << " removed), " << g.layout.charts.size() << " patches on "
-    << g.layout.mesh.num_faces() << " triangles\n";
+    << g.layout.mesh.num_faces() << " triangles, traced along the "
+    << (g.traced_parametrization ? "parametrization" : "field's streamlines") << " ("
+    << g.folded_faces << " folded faces)\n";
   out.time["field_s"] = g.time_field_s;
   out.time["parametrization_s"] = g.time_parametrization_s;
   out.time["trace_s"] = g.time_trace_s;

@@ -33,6 +33,8 @@ TEST_F(StandaloneCli, CubeBecomesSixRegularGridsWithItsEightCorners) {
   EXPECT_EQ(j["input"]["sharp_edges"], 12 * 6);
   EXPECT_EQ(j["input"]["feature_corners"], 8);
   EXPECT_EQ(j["layout"]["patches"], 6);
+  EXPECT_EQ(j["layout"]["traced_along"], "parametrization");  // exact on flat faces: no fold
+  EXPECT_EQ(j["layout"]["folded_faces"], 0);
   EXPECT_EQ(j["field"]["singularities"], 8);
   const auto& m = j["metrics"];
   EXPECT_EQ(m["manifold"], true);
@@ -42,7 +44,8 @@ TEST_F(StandaloneCli, CubeBecomesSixRegularGridsWithItsEightCorners) {
   EXPECT_EQ(m["singular_vertices"], 8);
   EXPECT_EQ(m["interior_singularities"]["3"], 8);
   EXPECT_GT(m["scaled_jacobian"]["min"].get<double>(), 0.99);  // six flat grids
-  for (const char* stage : {"read_s", "field_s", "trace_s", "cut_s", "patches_s", "total_s"})
+  for (const char* stage :
+       {"read_s", "field_s", "parametrization_s", "trace_s", "cut_s", "patches_s", "total_s"})
     EXPECT_TRUE(j["time"].contains(stage)) << stage;
 }
 
