@@ -22,7 +22,7 @@ struct MapRun {
   std::vector<double> quarters;
 };
 
-MapRun run(const TriangleMesh& mesh, layout::CrossFieldOptions field_options = {}) {
+MapRun parametrize(const TriangleMesh& mesh, layout::CrossFieldOptions field_options = {}) {
   const layout::Features features = layout::detect_features(mesh, {});
   const layout::CrossField field = layout::compute_cross_field(mesh, features, field_options);
   const layout::SurfaceTopology top(mesh);
@@ -58,7 +58,7 @@ void expect_seamless(const TriangleMesh& mesh, const MapRun& r) {
 
 TEST(LayoutSeamless, SquareIsMappedExactly) {
   const TriangleMesh square = test::square(2, 6);
-  const MapRun r = run(square);
+  const MapRun r = parametrize(square);
   expect_seamless(square, r);
   EXPECT_LT(r.map.mean_distortion, 1e-6);
   // Border corners are right angles of the map, straight border vertices straight.
@@ -77,21 +77,21 @@ TEST(LayoutSeamless, SphereAndCubeAreConesAtTheirSingularities) {
   layout::CrossFieldOptions smoothest;
   smoothest.align_to_curvature = false;
   const TriangleMesh sphere = test::icosphere(3);
-  const MapRun s = run(sphere, smoothest);
+  const MapRun s = parametrize(sphere, smoothest);
   expect_seamless(sphere, s);
   int cones = 0;
   for (int v = 0; v < sphere.num_vertices(); ++v) cones += std::fabs(s.quarters[v] - 4) > 0.5;
   EXPECT_EQ(cones, 8);  // the field's 8 valence-3 singularities, each a cone of 3 quarters
 
   const TriangleMesh cube = test::cube(3);
-  const MapRun c = run(cube);
+  const MapRun c = parametrize(cube);
   expect_seamless(cube, c);
   EXPECT_LT(c.map.mean_distortion, 1e-6);  // the cube's faces are flat and the field exact
 }
 
 TEST(LayoutSeamless, TorusFollowsItsPrincipalDirectionsWithoutCones) {
   const TriangleMesh torus = test::torus(3, 1, 48, 16);
-  const MapRun t = run(torus);
+  const MapRun t = parametrize(torus);
   expect_seamless(torus, t);
   for (int v = 0; v < torus.num_vertices(); ++v) EXPECT_NEAR(t.quarters[v], 4, 1e-4);
 }
