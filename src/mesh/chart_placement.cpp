@@ -15,6 +15,13 @@ using Vec3 = std::array<double, 3>;
 
 constexpr int kShakenStarts = 8;
 
+// The retries may relax at most this many times as many vertices, summed over their rounds, as
+// one smoothing of the whole mesh does. A retry relaxes tangled vertices, each of which tries
+// dozens of positions, so without a bound a layout with many tangled charts spent minutes here
+// (a bare mesh's layout: 165 s against 6 s for the first smoothing). On QuadWild's 23 layouts
+// the retries use at most 0.11 of it, so the bound changes none of their results.
+constexpr int64_t kRetryWork = 1;
+
 // The number of inverted or degenerate quads among `quads` and their smallest scaled
 // Jacobian, by which a tangled chart's alternatives are compared.
 std::pair<int, double> tangle(const QuadMesh& mesh, const std::vector<int>& quads) {
@@ -54,6 +61,8 @@ void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& leng
                           const SmoothingOptions& smoothing, SurfaceSmoother& smoother,
                           Tessellation& t) {
   QuadMesh& mesh = t.mesh;
+  // Deterministic (counted, not timed), so that a run repeats exactly.
+  int64_t budget = kRetryWork * mesh.num_vertices() * smoothing.iterations;
   std::vector<std::vector<int>> chart_quads(layout.charts.size());
   for (int f = 0; f < mesh.num_quads(); ++f) chart_quads[mesh.quad_patch[f]].push_back(f);
   std::vector<std::vector<int>> vertex_quads(mesh.num_vertices());
@@ -63,6 +72,12 @@ void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& leng
   // `vertices` end up less tangled.
   const auto attempt = [&](std::vector<int> vertices, const std::function<void()>& start,
                            const SmoothingOptions& options) {
+    const int64_t work = static_cast<int64_t>(vertices.size()) * options.iterations;
+    if (work > budget) {
+      budget = 0;
+      return;
+    }
+    budget -= work;
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
     std::vector<int> touching;
@@ -88,7 +103,7 @@ void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& leng
     }
   SmoothingOptions longer = smoothing;
   longer.iterations *= 3;
-  for (int c = 0; c < static_cast<int>(layout.charts.size()); ++c) {
+  for (int c = 0; c < static_cast<int>(layout.charts.size()) && budget > 0; ++c) {
     if (tangle(mesh, chart_quads[c]).first == 0) continue;
     attempt(
         globals[c],

@@ -27,6 +27,9 @@ void place_interior(const Layout& layout, int c, const std::vector<int64_t>& len
 //  2. three times the smoothing rounds with the neighbouring charts' vertices free too;
 //  3. both together;
 //  4. up to 8 randomly shaken starts (a generator seeded by the chart id: reproducible).
+// The retries stop once they have relaxed as many vertices (summed over their rounds) as one
+// smoothing of the whole mesh: enough for every layout QuadWild made, and a bound on the time
+// where a layout leaves many charts tangled.
 // `patterns[c]` and `globals[c]` (pattern vertex → quad mesh vertex) as tessellate built them;
 // `smoother` is set up on `tessellation`.
 void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& lengths,
