@@ -121,12 +121,35 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
   out.time["read_s"] = read_s;
 
   layout::GeneratedLayout g;
+  const auto layout_start = std::chrono::steady_clock::now();
+  double earlier_s = 0;  // the time of failed attempts
+  const auto on_progress = [&](const layout::LayoutProgress& p) {
+    if (o.progress) print_stage(read_s + earlier_s + p.elapsed_s, p.stage, p.detail);
+  };
+  // The two ways of tracing fail in different places (a patch left around a cluster of
+  // singularities that no seed's trace cuts open): where the default fails, the parametrization
+  // is traced despite its folds, then the field's streamlines.
+  std::vector<layout::LayoutOptions> attempts{o.layout};
+  if (o.layout.trace_parametrization) {
+    attempts.push_back(o.layout);
+    attempts.back().max_folded_fraction = 1;
+    attempts.push_back(o.layout);
+    attempts.back().trace_parametrization = false;
+  }
   try {
-    g = layout::generate_layout(surface.mesh, features, o.layout,
-                                [&](const layout::LayoutProgress& p) {
-                                  if (o.progress)
-                                    print_stage(read_s + p.elapsed_s, p.stage, p.detail);
-                                });
+    for (size_t i = 0;; ++i) {
+      try {
+        g = layout::generate_layout(surface.mesh, features, attempts[i], on_progress);
+        break;
+      } catch (const std::runtime_error& e) {
+        if (i + 1 == attempts.size() ||
+            std::string(e.what()).find("cannot be charts") == std::string::npos)
+          throw;
+        earlier_s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - layout_start).count();
+        on_progress({0, "retry", std::string(e.what()) + "; tracing another way"});
+      }
+    }
   } catch (const std::runtime_error& e) {
     if (!o.info) throw;
     s << "layout        not possible: " << e.what() << "\n";

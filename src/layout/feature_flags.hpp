@@ -14,4 +14,10 @@ namespace bimdf::layout {
 // checked them).
 std::vector<bool> feature_edge_flags(const SurfaceTopology& top, const Features& features);
 
+// Sharp edges (per undirected edge of `top`) cleaned of noise as FeatureOptions::erode_dilate
+// says, with `steps` erosions: spiky triangles' edges dropped, dangling ends eroded and the
+// remaining curves grown back from their eroded ends, small sets away from the border dropped.
+// `steps` ≤ 0 returns `sharp` as it is.
+std::vector<bool> clean_sharp_edges(const SurfaceTopology& top, std::vector<bool> sharp, int steps);
+
 }  // namespace bimdf::layout

@@ -67,8 +67,63 @@ Features finish(const SurfaceTopology& top, std::vector<bool> sharp,
   return f;
 }
 
-// Erodes sharp edges with a dangling end `steps` times, then grows them back as many times
-// along the originally sharp edges that touch the remaining curves or the border.
+// Drops the sharp edges of every triangle whose three edges are all sharp: a lone spike or dent
+// (a scan's noise, a fold of the triangulation), which no curve passes through; left in, its
+// three edges are a closed loop that erosion cannot shrink and whose corners become patch
+// corners.
+std::vector<bool> drop_spiky_triangles(const SurfaceTopology& top, std::vector<bool> sharp) {
+  std::vector<bool> dropped(top.num_edges(), false);
+  for (int f = 0; f < top.mesh().num_faces(); ++f) {
+    const int e0 = top.edge(3 * f), e1 = top.edge(3 * f + 1), e2 = top.edge(3 * f + 2);
+    if (sharp[e0] && sharp[e1] && sharp[e2]) dropped[e0] = dropped[e1] = dropped[e2] = true;
+  }
+  for (int e = 0; e < top.num_edges(); ++e)
+    if (dropped[e]) sharp[e] = false;
+  return sharp;
+}
+
+// Drops every connected set of sharp edges that has fewer than `min_edges` edges and does not
+// touch the border. Erosion removes short open curves but cannot shrink a closed or branched
+// one: a small loop, or a loop with a chord, around a bump of a scan. Left in, it becomes a
+// tiny ring of patches that no separatrix may cut open.
+std::vector<bool> drop_small_components(const SurfaceTopology& top, std::vector<bool> sharp,
+                                        const std::vector<bool>& border, int min_edges) {
+  const int E = top.num_edges(), V = top.mesh().num_vertices();
+  std::vector<std::vector<int>> at(V);
+  std::vector<bool> on_border(V, false);
+  for (int e = 0; e < E; ++e) {
+    const int h = top.edge_half_edge(e);
+    for (int v : {top.from(h), top.to(h)}) {
+      if (sharp[e]) at[v].push_back(e);
+      if (border[e]) on_border[v] = true;
+    }
+  }
+  std::vector<char> seen(E, 0);
+  for (int start = 0; start < E; ++start) {
+    if (!sharp[start] || seen[start]) continue;
+    std::vector<int> component{start};
+    seen[start] = 1;
+    bool touches_border = false;
+    for (size_t i = 0; i < component.size(); ++i) {
+      const int h = top.edge_half_edge(component[i]);
+      for (int v : {top.from(h), top.to(h)}) {
+        touches_border = touches_border || on_border[v];
+        for (int e : at[v])
+          if (!seen[e]) seen[e] = 1, component.push_back(e);
+      }
+    }
+    if (!touches_border && static_cast<int>(component.size()) < min_edges)
+      for (int e : component) sharp[e] = false;
+  }
+  return sharp;
+}
+
+// Erodes sharp edges with a dangling end `steps` times, then grows the curves back as many
+// times from the ends that erosion made: each step adds the originally sharp edges at the
+// growth front (at first the dangling ends of what is left; then the far ends of the edges
+// just added). Growing back only from ends restores the long curves' full length without
+// restoring the short spurs that branch off them at a junction (a crease in a scan is a
+// zigzag of triangle edges with such spurs, and each spur would end in a patch corner).
 std::vector<bool> erode_dilate(const SurfaceTopology& top, const std::vector<bool>& sharp,
                                int steps) {
   const int E = top.num_edges(), V = top.mesh().num_vertices();
@@ -90,16 +145,30 @@ std::vector<bool> erode_dilate(const SurfaceTopology& top, const std::vector<boo
     for (int e = 0; e < E; ++e)
       if (kept[e] && (degree[ends(e)[0]] == 1 || degree[ends(e)[1]] == 1)) kept[e] = false;
   }
+  count_degrees();
+  std::vector<char> front(V, 0), next(V, 0);
+  for (int v = 0; v < V; ++v) front[v] = degree[v] == 1;
   for (int s = 0; s < steps; ++s) {
-    count_degrees();
-    for (int e = 0; e < E; ++e)
-      if (sharp[e] && !kept[e] && (degree[ends(e)[0]] > 0 || degree[ends(e)[1]] > 0))
-        kept[e] = true;
+    std::fill(next.begin(), next.end(), 0);
+    for (int e = 0; e < E; ++e) {
+      if (!sharp[e] || kept[e]) continue;
+      const auto [a, b] = ends(e);
+      if (!front[a] && !front[b]) continue;
+      kept[e] = true;
+      next[front[a] ? b : a] = 1;
+    }
+    front.swap(next);
   }
-  return kept;
+  return drop_small_components(top, std::move(kept), border, 2 * steps + 1);
 }
 
 }  // namespace
+
+std::vector<bool> clean_sharp_edges(const SurfaceTopology& top, std::vector<bool> sharp,
+                                    int steps) {
+  if (steps <= 0) return sharp;
+  return erode_dilate(top, drop_spiky_triangles(top, std::move(sharp)), steps);
+}
 
 std::vector<bool> feature_edge_flags(const SurfaceTopology& top, const Features& features) {
   std::vector<bool> flag(top.num_edges(), false);
@@ -122,7 +191,7 @@ Features detect_features(const TriangleMesh& mesh, const FeatureOptions& options
     const Vec3 b = detail::normalized(detail::triangle_normal(mesh, g / 3));
     sharp[e] = detail::dot(a, b) < limit;
   }
-  return finish(top, erode_dilate(top, sharp, options.erode_dilate), options);
+  return finish(top, clean_sharp_edges(top, std::move(sharp), options.erode_dilate), options);
 }
 
 Features features_from_edges(const TriangleMesh& mesh, const std::vector<std::array<int, 2>>& edges,

@@ -12,6 +12,8 @@
 #include "bimdf/error.hpp"
 #include "bimdf/layout/features.hpp"
 #include "bimdf/layout/surface.hpp"
+#include "layout/feature_flags.hpp"
+#include "layout/surface_topology.hpp"
 #include "surface_fixtures.hpp"
 
 namespace bimdf {
@@ -208,6 +210,38 @@ TEST(LayoutSurface, ReadsObjOffAndPlyAlike) {
   EXPECT_EQ(read_error(truncated), truncated + ": element face 0: the file ends early");
   const std::string two = dir.write("two.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
   EXPECT_EQ(read_error(two), two + ":3: face 0 has 2 vertices, expected at least 3");
+}
+
+TEST(LayoutFeatures, NoiseIsCleanedAndLongCurvesKeepTheirLength) {
+  // A 20 × 20 grid (vertex (i, j) is i·21 + j) with hand-set sharp edges: a long curve along
+  // j = 10 with a short spur, a lone spiky triangle, the four edges of one cell (a small loop)
+  // and a short open curve. Four erosions keep only the long curve, at its full length.
+  const TriangleMesh grid = test::square(1, 20);
+  const layout::SurfaceTopology top(grid);
+  const auto id = [](int i, int j) { return i * 21 + j; };
+  const auto edge = [&](int a, int b) {
+    for (int h : top.outgoing(a))
+      if (top.to(h) == b) return top.edge(h);
+    for (int h : top.outgoing(b))
+      if (top.to(h) == a) return top.edge(h);
+    ADD_FAILURE() << a << "-" << b << " is no edge";
+    return 0;
+  };
+  std::vector<bool> sharp(top.num_edges(), false), expected = sharp;
+  for (int i = 2; i < 18; ++i) sharp[edge(id(i, 10), id(i + 1, 10))] = true;
+  expected = sharp;
+  sharp[edge(id(10, 10), id(10, 11))] = sharp[edge(id(10, 11), id(10, 12))] = true;
+  for (auto [a, b] : {std::pair{id(3, 3), id(4, 3)},
+                      {id(4, 3), id(4, 4)},
+                      {id(3, 3), id(4, 4)},
+                      {id(15, 15), id(16, 15)},
+                      {id(16, 15), id(16, 16)},
+                      {id(16, 16), id(15, 16)},
+                      {id(15, 16), id(15, 15)}})
+    sharp[edge(a, b)] = true;
+  for (int j = 12; j < 18; ++j) sharp[edge(id(5, j), id(5, j + 1))] = true;
+  EXPECT_EQ(layout::clean_sharp_edges(top, sharp, 4), expected);
+  EXPECT_EQ(layout::clean_sharp_edges(top, sharp, 0), sharp);
 }
 
 TEST(LayoutFeatures, CubeCreasesAndCorners) {

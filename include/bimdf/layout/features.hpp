@@ -22,9 +22,12 @@ struct FeatureOptions {
   double corner_angle_deg = 45;
   // Short sharp curves are noise (a scan's bumps, a sculpt's creases), not features: sharp
   // edges are eroded this many times from every dangling end, then grown back as many times
-  // along the sharp edges that touch what is left (QuadWild's `feature_erode_dilate`, same
-  // default). A sharp curve with a free end that is at most twice this many edges long
-  // disappears; longer curves keep their full length. 0 keeps every sharp edge.
+  // from the ends that erosion made (QuadWild's `feature_erode_dilate`, same default). A sharp
+  // curve with a free end that is at most twice this many edges long disappears; longer curves
+  // keep their full length, without the short spurs that branched off them. Also dropped,
+  // since erosion cannot shrink them: the edges of triangles whose three edges are all sharp
+  // (a lone spike), and sets of connected sharp edges away from the border with at most twice
+  // this many edges (a small loop). 0 keeps every sharp edge.
   int erode_dilate = 4;
 };
 
