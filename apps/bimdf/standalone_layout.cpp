@@ -121,35 +121,12 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
   out.time["read_s"] = read_s;
 
   layout::GeneratedLayout g;
-  const auto layout_start = std::chrono::steady_clock::now();
-  double earlier_s = 0;  // the time of failed attempts
-  const auto on_progress = [&](const layout::LayoutProgress& p) {
-    if (o.progress) print_stage(read_s + earlier_s + p.elapsed_s, p.stage, p.detail);
-  };
-  // The two ways of tracing fail in different places (a patch left around a cluster of
-  // singularities that no seed's trace cuts open): where the default fails, the parametrization
-  // is traced despite its folds, then the field's streamlines.
-  std::vector<layout::LayoutOptions> attempts{o.layout};
-  if (o.layout.trace_parametrization) {
-    attempts.push_back(o.layout);
-    attempts.back().max_folded_fraction = 1;
-    attempts.push_back(o.layout);
-    attempts.back().trace_parametrization = false;
-  }
   try {
-    for (size_t i = 0;; ++i) {
-      try {
-        g = layout::generate_layout(surface.mesh, features, attempts[i], on_progress);
-        break;
-      } catch (const std::runtime_error& e) {
-        if (i + 1 == attempts.size() ||
-            std::string(e.what()).find("cannot be charts") == std::string::npos)
-          throw;
-        earlier_s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - layout_start).count();
-        on_progress({0, "retry", std::string(e.what()) + "; tracing another way"});
-      }
-    }
+    g = layout::generate_layout(surface.mesh, features, o.layout,
+                                [&](const layout::LayoutProgress& p) {
+                                  if (o.progress)
+                                    print_stage(read_s + p.elapsed_s, p.stage, p.detail);
+                                });
   } catch (const std::runtime_error& e) {
     if (!o.info) throw;
     s << "layout        not possible: " << e.what() << "\n";
@@ -177,6 +154,7 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
     << g.indices.quarter_index_sum / 4 << " = Euler characteristic\n";
   out.json["layout"] = {{"traced_along", g.traced_parametrization ? "parametrization" : "field"},
                         {"folded_faces", g.folded_faces},
+                        {"attempts", g.attempts},
                         {"trace_starts", g.trace_starts},
                         {"traces", g.traces},
                         {"removed_traces", g.removed_traces},
@@ -186,7 +164,8 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
     << g.removed_traces << " removed), " << g.layout.charts.size() << " patches on "
     << g.layout.mesh.num_faces() << " triangles, traced along the "
     << (g.traced_parametrization ? "parametrization" : "field's streamlines") << " ("
-    << g.folded_faces << " folded faces)\n";
+    << g.folded_faces << " folded faces"
+    << (g.attempts > 1 ? "; tracing attempt " + std::to_string(g.attempts) : std::string()) << ")\n";
   out.time["field_s"] = g.time_field_s;
   out.time["parametrization_s"] = g.time_parametrization_s;
   out.time["trace_s"] = g.time_trace_s;

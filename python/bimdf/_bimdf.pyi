@@ -149,6 +149,7 @@ def remesh(
     quality_rounds: int = 5,
     threads: int = 1,
     time_limit: float | None = None,
+    sharp_angle: float = 35.0,
 ) -> Mesh: ...
 def requantize(
     V: ArrayLike,

@@ -7,11 +7,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 
 #include "arrays.hpp"
 #include "bimdf/io.hpp"
+#include "bimdf/layout/generate.hpp"
+#include "bimdf/layout/surface.hpp"
 #include "bimdf/metrics.hpp"
 #include "bimdf/quant/quantize.hpp"
 #include "bimdf/quant/tessellate.hpp"
@@ -115,6 +118,63 @@ quant::Layout layout_from_python(py::handle layout) {
   return quant::build_layout(std::move(mesh), std::move(face_chart), corners, "<arrays>");
 }
 
+// What remesh works on: a QuadWild layout (layout_from_python), or a layout made here from a
+// bare triangle or polygon mesh — a path with no NAME.patch beside it, or a tuple (V, F) — as
+// `bimdf remesh MESH` makes it; `made` then describes it for the report.
+struct RemeshInput {
+  quant::Layout layout;
+  std::optional<py::dict> made;
+};
+
+RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle) {
+  if (!(sharp_angle >= 0 && sharp_angle <= 180))
+    throw py::value_error("sharp_angle must be in [0, 180]");
+  PolygonMesh bare;
+  std::string source;
+  if (py::isinstance<py::str>(arg) || py::hasattr(arg, "__fspath__")) {
+    source = py::str(py::module_::import("os").attr("fspath")(arg));
+    require_file(source);
+    std::error_code ec;
+    if (std::filesystem::exists(std::filesystem::path(source).replace_extension(".patch"), ec))
+      return {layout_from_python(arg), std::nullopt};
+    py::gil_scoped_release release;
+    bare = read_polygon_mesh(source);
+  } else if (py::isinstance<py::tuple>(arg) && py::len(arg) == 2) {
+    const auto t = py::reinterpret_borrow<py::tuple>(arg);
+    bare.vertices = point_rows(t[0], "V");
+    for (const auto& f : faces_from_python<3>(t[1], bare.num_vertices()))
+      bare.faces.push_back({f[0], f[1], f[2]});
+    source = "<arrays>";
+  } else {
+    return {layout_from_python(arg), std::nullopt};
+  }
+  layout::FeatureOptions feature_options;
+  feature_options.sharp_angle_deg = sharp_angle;
+  std::optional<layout::GeneratedLayout> g;
+  int sharp_edges = 0;
+  {
+    py::gil_scoped_release release;
+    const layout::Surface surface = layout::prepare_surface(bare, source);
+    const layout::Features features = layout::detect_features(surface.mesh, feature_options);
+    sharp_edges = static_cast<int>(features.sharp_edges.size());
+    g = layout::generate_layout(surface.mesh, features, {});
+  }
+  int singular = 0;
+  for (const auto& x : g->indices.singularities) singular += !x.on_border;
+  py::dict made;
+  made["sharp_edges"] = sharp_edges;
+  made["field_singularities"] = singular;
+  made["traced_along"] = g->traced_parametrization ? "parametrization" : "field";
+  made["folded_faces"] = g->folded_faces;
+  made["attempts"] = g->attempts;
+  made["patches"] = g->layout.charts.size();
+  made["time"] = py::dict(
+      py::arg("field_s") = g->time_field_s, py::arg("parametrization_s") = g->time_parametrization_s,
+      py::arg("trace_s") = g->time_trace_s, py::arg("cut_s") = g->time_cut_s,
+      py::arg("patches_s") = g->time_patches_s);
+  return {std::move(g->layout), made};
+}
+
 quant::QuantizeOptions quantize_options(double scale, std::optional<double> edge_length,
                                         std::optional<int64_t> target_faces, bool align,
                                         int threads, std::optional<double> time_limit) {
@@ -180,13 +240,14 @@ py::dict quantize(py::handle layout_arg, double scale, std::optional<double> edg
 py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge_length,
                  std::optional<int64_t> target_faces, bool align, int smooth_iterations,
                  double smooth_damping, int quality_rounds, int threads,
-                 std::optional<double> time_limit) {
+                 std::optional<double> time_limit, double sharp_angle) {
   const auto start = std::chrono::steady_clock::now();
   const quant::QuantizeOptions options =
       quantize_options(scale, edge_length, target_faces, align, threads, time_limit);
   const quant::SmoothingOptions smoothing =
       smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
-  const quant::Layout layout = layout_from_python(layout_arg);
+  RemeshInput input = remesh_input_from_python(layout_arg, sharp_angle);
+  const quant::Layout& layout = input.layout;
   std::optional<quant::Quantization> q;
   quant::Tessellation t;
   QuadMeshMetrics metrics;
@@ -201,6 +262,7 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
   report["quantization"] = quantization_to_python(*q);
   report["metrics"] = metrics_to_python(metrics);
   report["warnings"] = layout.warnings;
+  if (input.made) report["layout"] = *input.made;
   report["time"] =
       py::dict(py::arg("patterns_s") = t.time_patterns_s, py::arg("mapping_s") = t.time_mapping_s,
                py::arg("smoothing_s") = t.time_smoothing_s, py::arg("polish_s") = t.time_polish_s,
@@ -357,8 +419,13 @@ void bind_mesh(py::module_& m) {
         py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
         py::arg("align") = true, py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
         py::arg("quality_rounds") = 5, py::arg("threads") = 1, py::arg("time_limit") = py::none(),
-        "Quantizes and tessellates a QuadWild layout as `bimdf remesh` does. Returns (V, F, "
-        "report): vertices float64 (n, 3), quads int64 (m, 4), the report dict.");
+        py::arg("sharp_angle") = 35.0,
+        "Remeshes as `bimdf remesh` does: a QuadWild layout (a path to NAME.obj with NAME.patch "
+        "beside it, or a tuple (V, F, patch, corners)) is quantized and tessellated; a bare "
+        "triangle or polygon mesh (a path to .obj/.off/.ply without NAME.patch, or a tuple "
+        "(V, F)) first gets its own cross field and layout (features above sharp_angle "
+        "degrees; the report's 'layout' says how it was made). Returns (V, F, report): "
+        "vertices float64 (n, 3), quads int64 (m, 4), the report dict.");
   m.def(
       "requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("scale") = 1.0,
       py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),

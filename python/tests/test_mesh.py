@@ -69,6 +69,37 @@ def test_remesh_without_polishing_equals_the_cli(tmp_path):
     assert report["time"]["polish_s"] < 1e-3  # nothing to do but return
 
 
+def test_remesh_of_a_bare_mesh_equals_the_cli(tmp_path):
+    """A bare mesh (the layout's triangles alone, as (V, F) or as a file with no NAME.patch
+    beside it) gets its own cross field and layout, exactly as `bimdf remesh MESH` makes them."""
+    bare = tmp_path / "bare.obj"
+    bare.write_text(BUNNY_LAYOUT.read_text())
+    out = tmp_path / "quads.obj"
+    cli_report = read_cli_report(tmp_path, "remesh", bare, "-o", out)
+    V_cli, F_cli = bimdf.read_obj(str(out))
+    for arg in (layout_triangles(), bare):
+        V, F, report = bimdf.remesh(arg)
+        np.testing.assert_array_equal(F, F_cli)
+        np.testing.assert_array_equal(V, V_cli)
+        assert report["quads"] == len(F) == cli_report["metrics"]["faces"]
+        assert_same_numbers(report["metrics"], cli_report["metrics"])
+        for key in ("traced_along", "folded_faces", "attempts", "patches"):
+            assert report["layout"][key] == cli_report["layout"][key], key
+        assert report["layout"]["field_singularities"] == cli_report["field"]["singularities"]
+        assert report["layout"]["sharp_edges"] == cli_report["input"]["sharp_edges"]
+
+
+def test_remesh_of_a_bare_mesh_refuses_a_non_manifold_one():
+    V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]], dtype=float)
+    F = np.array([[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+    with pytest.raises(bimdf.InputError) as e:
+        bimdf.remesh((V, F))
+    assert str(e.value) == ("<arrays>: the mesh edge between vertices 0 and 1 has 3 faces, "
+                            "expected at most 2 (non-manifold)")
+    with pytest.raises(ValueError, match="sharp_angle must be in"):
+        bimdf.remesh((V, F), sharp_angle=200)
+
+
 def test_quantize_equals_the_cli_and_layouts_from_arrays_equal_files(tmp_path):
     cli = json.loads(run_cli("quantize", BUNNY_LAYOUT, "--json").stdout)
     q = bimdf.quantize(str(BUNNY_LAYOUT))

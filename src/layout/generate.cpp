@@ -200,11 +200,15 @@ std::vector<double> parameter_quarters(const SurfaceTopology& cut_top, const Cut
   return out;
 }
 
-}  // namespace
+// A layout that cannot be made because a patch cannot be a chart.
+struct NotCharts : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
-GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
-                                const LayoutOptions& options,
-                                const std::function<void(const LayoutProgress&)>& progress) {
+// One attempt, tracing as `options` says.
+GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& features,
+                                     const LayoutOptions& options,
+                                     const std::function<void(const LayoutProgress&)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   const auto report = [&](const char* stage, const std::string& detail) {
     if (progress) progress({since(start), stage, detail});
@@ -362,7 +366,7 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
           std::string list;
           for (const auto& [what, n] : kinds)
             list += (list.empty() ? "" : ", ") + std::to_string(n) + " × " + what;
-          throw std::runtime_error(std::to_string(bad) + " of " +
+          throw NotCharts(std::to_string(bad) + " of " +
                                    std::to_string(patches.problem.size()) +
                                    " patches cannot be charts (" + list + "; first: patch " +
                                    std::to_string(first) + ")");
@@ -391,6 +395,39 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
   report("patches", std::to_string(out.layout.charts.size()) + " patches (" +
                         std::to_string(patches.adjusted) + " with corners adjusted)");
   return out;
+}
+
+}  // namespace
+
+GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
+                                const LayoutOptions& options,
+                                const std::function<void(const LayoutProgress&)>& progress) {
+  // The two ways of tracing fail in different places (camel: a ring around two adjacent
+  // singularities that no seed's trace cuts open): where the first fails, the parametrization
+  // is traced despite its folds, then the field's streamlines.
+  std::vector<LayoutOptions> attempts{options};
+  if (options.trace_parametrization && options.try_other_ways) {
+    attempts.push_back(options);
+    attempts.back().max_folded_fraction = 1;
+    attempts.push_back(options);
+    attempts.back().trace_parametrization = false;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  double earlier_s = 0;  // spent on failed attempts
+  const auto report = [&](const LayoutProgress& p) {
+    if (progress) progress({earlier_s + p.elapsed_s, p.stage, p.detail});
+  };
+  for (size_t i = 0;; ++i) {
+    try {
+      GeneratedLayout out = generate_layout_once(mesh, features, attempts[i], report);
+      out.attempts = static_cast<int>(i) + 1;
+      return out;
+    } catch (const NotCharts& e) {
+      if (i + 1 == attempts.size()) throw;
+      earlier_s = since(start);
+      report({0, "retry", std::string(e.what()) + "; tracing another way"});
+    }
+  }
 }
 
 QuadwildFiles to_quadwild_files(const quant::Layout& layout) {

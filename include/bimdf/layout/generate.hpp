@@ -47,6 +47,9 @@ struct LayoutOptions {
   // the default, since iso-lines of one family do not meet (30 suited the streamlines).
   double shallow_angle_deg = 0;
   int max_ban_rounds = 6;
+  // Where tracing the parametrization leaves a patch that cannot be a chart, try again along
+  // the parametrization despite its folds, then along the field's streamlines.
+  bool try_other_ways = true;
 };
 
 // One progress report (LayoutOptions' caller decides what to show): a stage has just ended.
@@ -67,13 +70,16 @@ struct GeneratedLayout {
   int banned_traces = 0;     // separatrices not traced: they ended at a shallow angle
   int folded_faces = 0;      // of the parametrization (trace_parametrization)
   bool traced_parametrization = false;  // false: the field's streamlines were traced
+  int attempts = 1;  // tracings tried (LayoutOptions::try_other_ways), the last one kept
   double time_field_s = 0, time_parametrization_s = 0, time_trace_s = 0, time_cut_s = 0,
          time_patches_s = 0;
 };
 
 // Builds the layout of `mesh` (prepare_surface's output) with `features` (detect_features or
-// features_from_edges on it). Throws std::runtime_error when a patch cannot be a chart (not a
-// disk, or fewer than 3 or more than 6 corners), naming it.
+// features_from_edges on it), trying the other ways of tracing where the first leaves a patch
+// that cannot be a chart (LayoutOptions::try_other_ways; progress then reports a "retry"
+// stage). Throws std::runtime_error when a patch still cannot be a chart (not a disk, or
+// fewer than 3 boundary vertices), naming it.
 GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
                                 const LayoutOptions& options,
                                 const std::function<void(const LayoutProgress&)>& progress = {});
