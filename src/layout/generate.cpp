@@ -366,10 +366,9 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
           std::string list;
           for (const auto& [what, n] : kinds)
             list += (list.empty() ? "" : ", ") + std::to_string(n) + " × " + what;
-          throw NotCharts(std::to_string(bad) + " of " +
-                                   std::to_string(patches.problem.size()) +
-                                   " patches cannot be charts (" + list + "; first: patch " +
-                                   std::to_string(first) + ")");
+          throw NotCharts(std::to_string(bad) + " of " + std::to_string(patches.problem.size()) +
+                          " patches cannot be charts (" + list + "; first: patch " +
+                          std::to_string(first) + ")");
         }
       }
       break;
