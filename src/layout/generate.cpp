@@ -15,6 +15,7 @@
 #include "layout/patches.hpp"
 #include "layout/seamless.hpp"
 #include "layout/surface_topology.hpp"
+#include "layout/trace_selection.hpp"
 #include "layout/tracing.hpp"
 
 namespace bimdf::layout {
@@ -24,36 +25,6 @@ std::pair<int, int> edge_key(int a, int b) { return {std::min(a, b), std::max(a,
 
 double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-// Removes unfinished traces, then traces that end on a removed one (their end would dangle),
-// until none is left to remove. Returns how many were removed.
-int drop_dangling(std::vector<Trace>& traces) {
-  std::vector<bool> removed(traces.size(), false);
-  bool changed = true;
-  while (changed) {
-    changed = false;
-    for (size_t i = 0; i < traces.size(); ++i) {
-      if (removed[i]) continue;
-      const Trace& t = traces[i];
-      // A trace that ends at a singularity keeps its end, whatever becomes of the trace that
-      // passed there first; one that ends on a trace loses it with that trace.
-      const bool dangling =
-          t.end == Trace::End::Unfinished ||
-          (t.end == Trace::End::Trace && t.end_trace >= 0 && removed[t.end_trace]) ||
-          t.points.size() < 2;
-      if (dangling) removed[i] = changed = true;
-    }
-  }
-  int n = 0;
-  std::vector<Trace> kept;
-  for (size_t i = 0; i < traces.size(); ++i)
-    if (removed[i])
-      ++n;
-    else
-      kept.push_back(std::move(traces[i]));
-  traces = std::move(kept);
-  return n;
 }
 
 // Per vertex of the cut mesh: the input edge it was inserted on, or −1 (an input vertex, or a
@@ -257,6 +228,18 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   const double shallow_deg =
       out.traced_parametrization ? options.shallow_angle_deg : options.streamline_shallow_angle_deg;
 
+  std::vector<bool> curve_vertex(mesh.num_vertices(), false);
+  for (int e = 0; e < top.num_edges(); ++e)
+    if (curve[e]) {
+      const int h = top.edge_half_edge(e);
+      curve_vertex[top.from(h)] = curve_vertex[top.to(h)] = true;
+    }
+  double edge_length = 0;
+  for (int e = 0; e < top.num_edges(); ++e) {
+    const int h = top.edge_half_edge(e);
+    edge_length += detail::norm(detail::sub(mesh.vertices[top.to(h)], mesh.vertices[top.from(h)]));
+  }
+  edge_length /= std::max(1, top.num_edges());
   TraceOptions trace;
   trace.snap = snap;
   trace.max_length = options.max_trace_length;
@@ -269,20 +252,16 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   for (int round = 0;; ++round) {
     t = std::chrono::steady_clock::now();
     MotorcycleGraph graph;
-    // A separatrix that runs into a line of its own family at a shallow angle is that line,
-    // drifted: it is not traced, and everything is traced again without it (which may let
+    // Separatrices that make poor patch borders (trace_selection.hpp: shallow ends, short runs
+    // to a curve) are not traced, and everything is traced again without them (which may let
     // other separatrices run on), up to `max_ban_rounds` times.
     for (int ban_round = 0;; ++ban_round) {
       graph = trace_motorcycle_graph(top, frames, ways, out.indices.quarter_index, curve, trace);
       if (ban_round == options.max_ban_rounds) break;
       size_t before = trace.banned.size();
-      // Seeds' traces are there to cut a patch open: they stay, however they end (around a
-      // tube the two halves of a loop meet head on).
-      for (const Trace& tr : graph.traces)
-        if ((tr.end == Trace::End::Trace || tr.end == Trace::End::Curve) &&
-            tr.end_angle < shallow_deg * M_PI / 180 &&
-            std::find(trace.seeds.begin(), trace.seeds.end(), tr.start_vertex) == trace.seeds.end())
-          trace.banned.push_back({tr.start_vertex, tr.start_way});
+      ban_shallow_ends(graph.traces, shallow_deg * M_PI / 180, trace.seeds, trace.banned);
+      ban_short_to_curve(graph.traces, curve_vertex, options.short_to_curve_edges * edge_length,
+                         trace.banned);
       if (trace.banned.size() == before) break;
     }
     out.banned_traces = static_cast<int>(trace.banned.size());
@@ -292,7 +271,8 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
     out.time_trace_s = since(t);
     report("traced", std::to_string(out.traces) + " separatrices from " +
                          std::to_string(out.trace_starts) + " vertices, " +
-                         std::to_string(out.banned_traces) + " not traced (shallow ends), " +
+                         std::to_string(out.banned_traces) +
+                         " not traced (shallow or short ends), " +
                          std::to_string(out.removed_traces) + " removed");
 
     t = std::chrono::steady_clock::now();

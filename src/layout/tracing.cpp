@@ -10,6 +10,7 @@ namespace {
 
 using detail::Vec3;
 constexpr double kQuarter = M_PI / 2;
+constexpr double kMaxSteer = M_PI / 6;  // Tracer::steer
 
 // The angle between two lines (not directions): 0 to π/2.
 double line_angle(const Vec3& a, const Vec3& b) {
@@ -41,6 +42,7 @@ struct Segment {
 // away from the vertex). `ring_angle` places it around the vertex (0 at the ring's first edge).
 struct Leave {
   double ring_angle = 0;
+  double quarters = 0;  // its place around the vertex in the parameter plane (ring_quarters)
   int face = -1;
   double angle = 0;
   int edge_half_edge = -1;
@@ -95,6 +97,7 @@ class Tracer {
     double back = 0;
     int target = -1;      // a singularity it is paired with: it ends there when it gets close
     int partner_way = -1;  // the target's separatrix it stands for (not traced from there)
+    double steered = 0;    // its last piece's turn off its way (steer), radians
     bool operator<(const Walker& o) const {
       return length != o.length ? length > o.length : trace > o.trace;  // min-heap
     }
@@ -112,6 +115,14 @@ class Tracer {
     return l;
   }
   std::vector<Leave> leaves(int v) const;
+  // The angle from a to b (tangents of face f) in the parameter plane whose iso-lines are f's
+  // ways; the plain angle where the ways are too skewed to be a basis.
+  double parameter_angle(int f, const Vec3& a, const Vec3& b) const;
+  // Around v, where each of its ring's edges is (and, last, the end of the ring), in quarter
+  // turns of the parameter plane from the first edge, scaled so that the whole ring spans the
+  // field's turn there: 4 − index quarters inside, 2 − index on the border. `scale`: quarters
+  // per radian of parameter angle.
+  std::vector<double> ring_quarters(int v, double* scale = nullptr) const;
   double ring_total(int v) const;
   double ring_angle_of(int v, int face, const Vec3& d) const;
   double ring_angle_of_edge(int v, int other) const;
@@ -170,6 +181,13 @@ class Tracer {
     return w.target >= 0 &&
            (w.target != traces_[w.trace].start_vertex || w.length > 4 * approach_radius_);
   }
+  // Near its target a paired walker leaves its way and heads for a point on the target's
+  // separatrix it stands for, ahead of the target by a fraction of the distance left, so that
+  // it arrives along that separatrix: the sideways offset (up to the approach radius) is taken
+  // up by a gentle bend over a few edges instead of one step at a steep angle, which would
+  // leave the target's sectors on either side a sliver and a nearly straight angle (a corner
+  // too many). The steered angle in face f, or NaN to keep the way.
+  double steer(const Walker& w, int f, const Vec3& pos) const;
   Vec3 leave_vector(int v, const Leave& l) const;
   void pair_separatrices(const std::vector<std::vector<Leave>>& starts,
                          std::vector<std::vector<int>>& target,
@@ -183,11 +201,41 @@ double Tracer::ring_total(int v) const {
   return total;
 }
 
+double Tracer::parameter_angle(int f, const Vec3& a, const Vec3& b) const {
+  const P2 w0{std::cos(ways_[f][0]), std::sin(ways_[f][0])};
+  const P2 w1{std::cos(ways_[f][1]), std::sin(ways_[f][1])};
+  const double det = cross2(w0, w1);
+  const P2 a2{detail::dot(a, frames_.e1[f]), detail::dot(a, frames_.e2[f])};
+  const P2 b2{detail::dot(b, frames_.e1[f]), detail::dot(b, frames_.e2[f])};
+  if (det < 0.1) return std::atan2(cross2(a2, b2), a2.x * b2.x + a2.y * b2.y);
+  const P2 pa{cross2(a2, w1) / det, cross2(w0, a2) / det};
+  const P2 pb{cross2(b2, w1) / det, cross2(w0, b2) / det};
+  return std::atan2(cross2(pa, pb), pa.x * pb.x + pa.y * pb.y);
+}
+
+std::vector<double> Tracer::ring_quarters(int v, double* scale) const {
+  const std::vector<int> ring = top_.outgoing(v);
+  std::vector<double> at(ring.size() + 1, 0);
+  for (size_t j = 0; j < ring.size(); ++j) {
+    const int h = ring[j], f = h / 3;
+    const Vec3 a = detail::sub(m_.vertices[top_.to(h)], m_.vertices[v]);
+    const Vec3 b = detail::sub(m_.vertices[top_.from(SurfaceTopology::prev(h))], m_.vertices[v]);
+    at[j + 1] = at[j] + std::max(0.0, parameter_angle(f, a, b));
+  }
+  const int turn = (top_.on_border(v) ? 2 : 4) - quarter_index_[v];
+  const double s = turn > 0 && at.back() > 0 ? turn / at.back() : 1 / kQuarter;
+  for (double& x : at) x *= s;
+  if (scale) *scale = s;
+  return at;
+}
+
 // Every field direction that leaves v into one of its faces or along one of its edges, by ring
 // angle; near-duplicates (one direction seen from two faces of an edge) merged.
 std::vector<Leave> Tracer::leaves(int v) const {
   std::vector<Leave> out;
   const std::vector<int> ring = top_.outgoing(v);
+  double scale = 0;
+  const std::vector<double> at = ring_quarters(v, &scale);
   double start = 0;
   const double tolerance = 0.02;  // radians: a direction this close to an edge runs along it
   for (size_t j = 0; j < ring.size(); ++j) {
@@ -204,11 +252,15 @@ std::vector<Leave> Tracer::leaves(int v) const {
       l.ring_angle = start + std::clamp(beta, 0.0, corner);
       if (beta <= tolerance) {
         l.edge_half_edge = h;
+        l.quarters = at[j];
       } else if (beta >= corner - tolerance) {
         l.edge_half_edge = top_.opposite(p) >= 0 ? top_.opposite(p) : -2 - p;
+        l.quarters = at[j + 1];
       } else {
         l.face = f;
         l.angle = phi;
+        const double x = parameter_angle(f, a, frames_.direction(f, phi));
+        l.quarters = at[j] + std::clamp(x * scale, 0.0, at[j + 1] - at[j]);
       }
       out.push_back(l);
     }
@@ -375,8 +427,9 @@ bool Tracer::arrive(Walker& w, const SurfacePoint& q, const Vec3& qpos, int face
   const int h = h0 / 3 == face ? h0 : top_.opposite(h0);
   const int g = top_.opposite(h);
   const Vec3 edge = detail::sub(m_.vertices[top_.to(h)], m_.vertices[top_.from(h)]);
-  const double transported =
-      frames_.angle(face, dir) + (frames_.angle(g / 3, edge) - frames_.angle(face, edge));
+  // The way it was on (not the steered direction it drew), carried into the next face.
+  const double transported = frames_.angle(face, dir) - w.steered +
+                             (frames_.angle(g / 3, edge) - frames_.angle(face, edge));
   // The field direction of the next face closest to the transported one that points into it
   // (to the left of the edge as the next face walks it).
   const double into =
@@ -388,7 +441,12 @@ bool Tracer::arrive(Walker& w, const SurfacePoint& q, const Vec3& qpos, int face
     const double turn = std::fabs(std::remainder(phi - transported, 2 * M_PI));
     if (turn < best) best = turn, chosen = phi;
   }
-  if (best > 1e8) {
+  // A steered piece may cross an edge that its way runs along or away from: then no way of its
+  // family leads on, and it goes straight on for a face rather than turn a quarter.
+  const double straight = transported + w.steered;
+  if (best > M_PI / 4 && w.steered != 0 && std::sin(straight - into) > 1e-6)
+    chosen = straight;
+  else if (best > 1e8) {
     finish(w.trace, Trace::End::Unfinished, -1);
     return false;
   }
@@ -408,22 +466,32 @@ bool Tracer::move_in_face(Walker& w, const SurfacePoint& from, const Vec3& from_
     }
   }
   const P2 p = to_2d(f, from_pos);
-  const P2 d = {std::cos(w.angle), std::sin(w.angle)};
-  // The exit: the first edge the ray meets beyond its start.
   const double scale = face_scale(f);
   double best_s = 1e300, best_t = 0;
   int best_h = -1;
-  for (int i = 0; i < 3; ++i) {
-    const int h = 3 * f + i;
-    const P2 a = to_2d(f, m_.vertices[top_.from(h)]), b = to_2d(f, m_.vertices[top_.to(h)]);
-    const P2 g = minus(b, a);
-    const double denom = cross2(d, g);
-    if (std::fabs(denom) < 1e-12 * scale) continue;
-    const P2 ap = minus(a, p);
-    const double s = cross2(ap, g) / denom, t = cross2(ap, d) / denom;
-    if (s <= 1e-9 * scale || t < -1e-9 || t > 1 + 1e-9) continue;
-    if (s < best_s) best_s = s, best_t = std::clamp(t, 0.0, 1.0), best_h = h;
+  // The exit: the first edge the ray at `angle` meets beyond its start.
+  const auto exit_along = [&](double angle) {
+    const P2 d = {std::cos(angle), std::sin(angle)};
+    best_s = 1e300, best_h = -1;
+    for (int i = 0; i < 3; ++i) {
+      const int h = 3 * f + i;
+      const P2 a = to_2d(f, m_.vertices[top_.from(h)]), b = to_2d(f, m_.vertices[top_.to(h)]);
+      const P2 g = minus(b, a);
+      const double denom = cross2(d, g);
+      if (std::fabs(denom) < 1e-12 * scale) continue;
+      const P2 ap = minus(a, p);
+      const double s = cross2(ap, g) / denom, t = cross2(ap, d) / denom;
+      if (s <= 1e-9 * scale || t < -1e-9 || t > 1 + 1e-9) continue;
+      if (s < best_s) best_s = s, best_t = std::clamp(t, 0.0, 1.0), best_h = h;
+    }
+  };
+  const double steered = steer(w, f, from_pos);
+  w.steered = 0;
+  if (!std::isnan(steered)) {
+    exit_along(steered);
+    if (best_h >= 0) w.steered = std::remainder(steered - w.angle, 2 * M_PI);
   }
+  if (best_h < 0) exit_along(w.angle);
   if (best_h < 0) {  // numerically stuck (a ray leaving through a corner): give up here
     finish(w.trace, Trace::End::Unfinished, -1);
     return false;
@@ -476,6 +544,7 @@ bool Tracer::draw(Walker& w, int f, const SurfacePoint& from, const Vec3& from_p
 
 bool Tracer::move_along_edge(Walker& w, int h) {
   const int v = top_.from(h), u = top_.to(h);
+  w.steered = 0;
   if (curve_[top_.edge(h)]) {
     finish(w.trace, Trace::End::Curve, -1);
     return false;
@@ -564,14 +633,12 @@ void Tracer::start_directions(int v, std::vector<Leave>& out) const {
     return;
   }
   const std::vector<int> ring = top_.outgoing(v);
-  // Ring angles of the curve edges at v.
+  const std::vector<double> at = ring_quarters(v);
+  // Positions (ring_quarters) of the curve edges at v.
   std::vector<double> cuts;
-  double start = 0;
-  for (int h : ring) {
-    if (curve_[top_.edge(h)]) cuts.push_back(start);
-    start += top_.corner_angle(h);
-  }
-  const double total = start;
+  for (size_t j = 0; j < ring.size(); ++j)
+    if (curve_[top_.edge(ring[j])]) cuts.push_back(at[j]);
+  const double total = at.back();
   if (top_.on_border(v)) cuts.push_back(total);  // the fan's last (border) edge
   if (cuts.empty()) return;
   const bool closed = !top_.on_border(v);
@@ -579,20 +646,37 @@ void Tracer::start_directions(int v, std::vector<Leave>& out) const {
   for (int c = 0; c < (closed ? C : C - 1); ++c) {
     const double lo = cuts[c];
     const double hi = c + 1 < C ? cuts[c + 1] : cuts[0] + total;
-    std::vector<const Leave*> inside;
-    for (const Leave& l : ways) {
-      const double a = l.ring_angle < lo - 1e-9 ? l.ring_angle + total : l.ring_angle;
-      if (a > lo + 0.2 * kQuarter && a < hi - 0.2 * kQuarter) inside.push_back(&l);
+    // The sector spans q quarters; traces leave it at the 2nd, 4th, … (a seed's at every one),
+    // the way nearest each, so that no corner there exceeds a half turn. Counting in the
+    // parameter plane (not by the ways inside the sector) keeps a curve that passes straight
+    // through v free of starts even where the ways are not quite aligned to it.
+    const int q = static_cast<int>(std::lround(hi - lo));
+    for (int k = is_seed_[v] ? 1 : 2; k < q; k += is_seed_[v] ? 1 : 2) {
+      const double want = lo + k * (hi - lo) / q;
+      const Leave* best = nullptr;
+      double best_off = 0.5;
+      for (const Leave& l : ways) {
+        const double a = l.quarters < lo - 1e-9 ? l.quarters + total : l.quarters;
+        if (std::fabs(a - want) < best_off) best_off = std::fabs(a - want), best = &l;
+      }
+      if (best) out.push_back(*best);
     }
-    std::sort(inside.begin(), inside.end(), [&](const Leave* x, const Leave* y) {
-      const double ax = x->ring_angle < lo ? x->ring_angle + total : x->ring_angle;
-      const double ay = y->ring_angle < lo ? y->ring_angle + total : y->ring_angle;
-      return ax < ay;
-    });
-    // A seed on a curve also crosses every sector: its ways at the odd quarters.
-    for (size_t k = is_seed_[v] ? 0 : 1; k < inside.size(); k += is_seed_[v] ? 1 : 2)
-      out.push_back(*inside[k]);
   }
+}
+
+double Tracer::steer(const Walker& w, int f, const Vec3& pos) const {
+  if (!may_close(w) || w.partner_way < 0 || options_.steer_radius <= 0) return NAN;
+  const Vec3& target = m_.vertices[w.target];
+  const double d = detail::norm(detail::sub(pos, target));
+  if (d > options_.steer_radius * approach_radius_) return NAN;
+  const Vec3 aim =
+      detail::along(target, options_.steer_lead * d, leave_vectors_[w.target][w.partner_way]);
+  const double angle = frames_.angle(f, detail::sub(aim, pos));
+  // Behind or far to the side: the pairing's head-on approach is gone; keep the way. Else
+  // turn by at most kMaxSteer, so that the trace stays recognisably on its way.
+  const double off = std::remainder(angle - w.angle, 2 * M_PI);
+  if (std::fabs(off) > M_PI / 2) return NAN;
+  return w.angle + std::clamp(off, -kMaxSteer, kMaxSteer);
 }
 
 Vec3 Tracer::leave_vector(int v, const Leave& l) const {
@@ -715,6 +799,7 @@ MotorcycleGraph Tracer::run() {
     Trace t;
     t.start_vertex = v;
     t.start_way = i;
+    t.start_ways = static_cast<int>(starts[v].size());
     t.points.push_back(SurfacePoint::at_vertex(v));
     traces_.push_back(t);
     w = Walker{};

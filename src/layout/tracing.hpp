@@ -56,6 +56,11 @@ struct TraceOptions {
   // own separatrices by less than ~30°.
   bool pair_singularities = true;
   double approach_radius = 1;
+  // Within this many approach radii of its target a paired trace steers onto the target's
+  // separatrix, aiming `steer_lead` × (distance left) ahead of the target along it; 0: it
+  // steps straight onto the target from the first face next to it.
+  double steer_radius = 3;
+  double steer_lead = 0.3;
   // Regular interior vertices to trace all four directions from, as if they were singular:
   // what cuts a patch that the separatrices left as an annulus or worse (generate.cpp).
   std::vector<int> seeds;
@@ -69,6 +74,7 @@ struct Trace {
   std::vector<SurfacePoint> points;  // from its start vertex to its end
   int start_vertex = -1;
   int start_way = -1;  // which of its start vertex's ways (TraceOptions::banned numbering)
+  int start_ways = 0;  // how many ways its start vertex has (consecutive ways: ±1 modulo this)
   End end = End::Unfinished;
   // End::Trace, End::Curve: the angle between its last piece and the line it stopped at (0 to
   // π/2). Near 0 it ran into a line of its own family: the two are one line of the layout, and

@@ -47,6 +47,11 @@ struct LayoutOptions {
   // the default, since iso-lines of one family do not meet (30 suited the streamlines).
   double shallow_angle_deg = 0;
   int max_ban_rounds = 6;
+  // A singularity off a curve whose consecutive separatrices reach that curve within this many
+  // average edge lengths sits practically on it: of each such run only the shortest is traced
+  // (the others would cut off small three-sided patches, each needing a singularity of its own
+  // in its pattern), over the same ban rounds. 0: all are traced.
+  double short_to_curve_edges = 3;
   // Where tracing the parametrization leaves a patch that cannot be a chart, try again along
   // the parametrization despite its folds, then along the field's streamlines.
   bool try_other_ways = true;
@@ -67,7 +72,7 @@ struct GeneratedLayout {
   int removed_traces = 0;  // unfinished, or ending on one that was removed
   int adjusted_patches = 0;  // patches given 3 or 6 corners where they had fewer or more
   int seeds = 0;             // regular vertices traced from to cut patches that were not disks
-  int banned_traces = 0;     // separatrices not traced: they ended at a shallow angle
+  int banned_traces = 0;     // separatrices not traced: shallow ends, short runs to a curve
   int folded_faces = 0;      // of the parametrization (trace_parametrization)
   bool traced_parametrization = false;  // false: the field's streamlines were traced
   int attempts = 1;  // tracings tried (LayoutOptions::try_other_ways), the last one kept

@@ -1,0 +1,34 @@
+// Which traced separatrices a layout keeps (issue 51, item 4). The motorcycle graph
+// (tracing.hpp) traces every separatrix; some of them make poor patch borders, and the layout
+// generator (generate.cpp) bans them — TraceOptions::banned — and traces again, or drops them
+// from the graph it cuts along.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "layout/tracing.hpp"
+
+namespace bimdf::layout {
+
+// Removes unfinished traces, then traces that end on a removed one (their end would dangle),
+// until none is left to remove. A trace that ends at a singularity keeps its end whatever
+// becomes of the trace that passed there first. Returns how many were removed.
+int drop_dangling(std::vector<Trace>& traces);
+
+// Bans (appends to `banned`) every trace that ends on a line at less than `shallow_angle`
+// radians (Trace::end_angle): it is that line, drifted. Traces from `seeds` are kept: they are
+// there to cut a patch open, and around a tube the two halves of a loop meet head on.
+void ban_shallow_ends(const std::vector<Trace>& traces, double shallow_angle,
+                      const std::vector<int>& seeds, std::vector<std::array<int, 2>>& banned);
+
+// A start off the curves (`curve_vertex` false) whose consecutive separatrices (start ways
+// i, i + 1, … modulo Trace::start_ways) all end on a curve within `short_length` sits
+// practically on that curve: traced, they would cut off small three-sided patches between
+// them and the curve, each needing a singularity of its own in its pattern. Bans all but the
+// shortest of each such run of two or more; a lone short one stays (a stub joining the
+// singularity to the curve). `short_length` ≤ 0 bans nothing.
+void ban_short_to_curve(const std::vector<Trace>& traces, const std::vector<bool>& curve_vertex,
+                        double short_length, std::vector<std::array<int, 2>>& banned);
+
+}  // namespace bimdf::layout

@@ -1,0 +1,151 @@
+// The motorcycle graph of separatrices (src/layout/tracing.cpp) and the choice of the traces a
+// layout keeps (trace_selection.cpp), on flat grids with hand-made ways and singularities, where
+// the right answer is known.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "layout/face_frames.hpp"
+#include "layout/surface_topology.hpp"
+#include "layout/trace_selection.hpp"
+#include "layout/tracing.hpp"
+#include "surface_fixtures.hpp"
+
+namespace bimdf {
+namespace {
+
+using layout::SurfacePoint;
+using layout::Trace;
+
+// The same pair of directions in every face: (cos a, sin a), (−sin a, cos a).
+layout::FaceWays uniform_ways(const TriangleMesh& m, const layout::FaceFrames& frames, double a) {
+  std::vector<std::array<detail::Vec3, 2>> d(
+      m.num_faces(), {detail::Vec3{std::cos(a), std::sin(a), 0}, {-std::sin(a), std::cos(a), 0}});
+  return layout::face_ways(frames, d);
+}
+
+std::vector<bool> border_edges(const layout::SurfaceTopology& top) {
+  std::vector<bool> curve(top.num_edges(), false);
+  for (int e = 0; e < top.num_edges(); ++e) curve[e] = top.opposite(top.edge_half_edge(e)) < 0;
+  return curve;
+}
+
+// The square [0, 8]² as an 8×8 grid; vertex (i, j) at (i, j) is i·9 + j.
+int vertex(int i, int j) { return i * 9 + j; }
+
+TEST(LayoutTracing, ACurveThroughAVertexStartsNothingEvenWhereTheWaysAreSkewedToIt) {
+  const TriangleMesh m = test::square(8, 8);
+  const layout::SurfaceTopology top(m);
+  const layout::FaceFrames frames(m);
+  // The border and the line y = 4 are curves; the ways are 25° off them (more than the fifth
+  // of a quarter that used to tell a way inside a sector from one along its curves), and no
+  // vertex is singular: no separatrix starts anywhere.
+  std::vector<bool> curve = border_edges(top);
+  for (int i = 0; i < 8; ++i)
+    for (int h = 0; h < 3 * m.num_faces(); ++h)
+      if (top.from(h) == vertex(i, 4) && top.to(h) == vertex(i + 1, 4)) curve[top.edge(h)] = true;
+  for (double skew_deg : {0.0, 25.0, -25.0}) {
+    const layout::FaceWays ways = uniform_ways(m, frames, skew_deg * M_PI / 180);
+    // Corners of the square turn by a quarter: index 1 there.
+    std::vector<int> index(m.num_vertices(), 0);
+    for (int v : {vertex(0, 0), vertex(0, 8), vertex(8, 0), vertex(8, 8)}) index[v] = 1;
+    const layout::MotorcycleGraph g =
+        layout::trace_motorcycle_graph(top, frames, ways, index, curve, {});
+    EXPECT_EQ(g.starts, 0) << "skew " << skew_deg << "°";
+    EXPECT_TRUE(g.traces.empty()) << "skew " << skew_deg << "°";
+  }
+}
+
+// Two singularities A (2, 4.3) and B (6, 5), head on along x, 0.7 apart across it: A's trace
+// towards B is paired with B's towards A. Returns the angle (degrees) between the trace's
+// last piece into B and B's separatrix it stands for (along x).
+double paired_arrival_deg(double steer_radius) {
+  TriangleMesh m = test::square(8, 8);
+  m.vertices[vertex(2, 4)][1] = 4.3;
+  const layout::SurfaceTopology top(m);
+  const layout::FaceFrames frames(m);
+  const layout::FaceWays ways = uniform_ways(m, frames, 0);
+  std::vector<int> index(m.num_vertices(), 0);
+  for (int v : {vertex(0, 0), vertex(0, 8), vertex(8, 0), vertex(8, 8)}) index[v] = 1;
+  index[vertex(2, 4)] = index[vertex(6, 5)] = 1;
+  layout::TraceOptions options;
+  options.steer_radius = steer_radius;
+  const layout::MotorcycleGraph g =
+      layout::trace_motorcycle_graph(top, frames, ways, index, border_edges(top), options);
+  for (const Trace& t : g.traces) {
+    const SurfacePoint& last = t.points.back();
+    if (t.start_vertex != vertex(2, 4) || last.kind != SurfacePoint::Kind::Vertex ||
+        last.id != vertex(6, 5))
+      continue;
+    EXPECT_EQ(t.end, Trace::End::Singularity);
+    const detail::Vec3 d = detail::sub(layout::position(top, last),
+                                       layout::position(top, t.points[t.points.size() - 2]));
+    return std::atan2(std::fabs(d[1]), d[0]) * 180 / M_PI;
+  }
+  ADD_FAILURE() << "no trace from A ends at B";
+  return 180;
+}
+
+TEST(LayoutTracing, APairedTraceSteersOntoItsPartnersSeparatrix) {
+  // Stepping straight onto B from the first face next to it turns by atan(0.7) ≈ 35°, which
+  // leaves B a sliver sector and a nearly straight one; steering over the last three approach
+  // radii arrives nearly along B's separatrix.
+  const double unsteered = paired_arrival_deg(0);
+  const double steered = paired_arrival_deg(3);
+  EXPECT_GT(unsteered, 30);
+  EXPECT_LT(steered, 15);
+}
+
+Trace ending(int start, int way, int ways, Trace::End end, double length) {
+  Trace t;
+  t.start_vertex = start;
+  t.start_way = way;
+  t.start_ways = ways;
+  t.end = end;
+  t.length = length;
+  t.points = {SurfacePoint::at_vertex(start), SurfacePoint::at_vertex(start)};
+  return t;
+}
+
+TEST(LayoutTraceSelection, OfEachRunOfShortWaysToACurveOnlyTheShortestStays) {
+  const std::vector<bool> on_curve = {false, false, false, true};
+  std::vector<Trace> traces = {
+      // Vertex 0, five ways: all but 2 are short to a curve, one run 3, 4, 0, 1 through the
+      // wrap-around.
+      ending(0, 4, 5, Trace::End::Curve, 0.5), ending(0, 0, 5, Trace::End::Curve, 0.2),
+      ending(0, 1, 5, Trace::End::Curve, 0.9), ending(0, 2, 5, Trace::End::Curve, 7),
+      ending(0, 3, 5, Trace::End::Curve, 0.1),
+      // Vertex 1: ways 0 and 2 of three are short, and consecutive through the wrap-around;
+      // way 1 ends on a trace.
+      ending(1, 0, 3, Trace::End::Curve, 0.4), ending(1, 2, 3, Trace::End::Curve, 0.3),
+      ending(1, 1, 3, Trace::End::Trace, 0.1),
+      // Vertex 2: short ways 0 and 2 of four, not consecutive.
+      ending(2, 0, 4, Trace::End::Curve, 0.1), ending(2, 2, 4, Trace::End::Curve, 0.1),
+      // Vertex 3 is on a curve: its short ways are its own business.
+      ending(3, 0, 4, Trace::End::Curve, 0.1), ending(3, 1, 4, Trace::End::Curve, 0.1)};
+  std::vector<std::array<int, 2>> banned;
+  layout::ban_short_to_curve(traces, on_curve, 1.0, banned);
+  std::sort(banned.begin(), banned.end());
+  // Vertex 0 keeps way 3 (the shortest of its run), vertex 1 way 2.
+  const std::vector<std::array<int, 2>> expected = {{0, 0}, {0, 1}, {0, 4}, {1, 0}};
+  EXPECT_EQ(banned, expected);
+  banned.clear();
+  layout::ban_short_to_curve(traces, on_curve, 0, banned);
+  EXPECT_TRUE(banned.empty());
+}
+
+TEST(LayoutTraceSelection, TracesEndingOnADroppedTraceAreDroppedToo) {
+  std::vector<Trace> traces = {
+      ending(0, 0, 4, Trace::End::Unfinished, 1), ending(1, 0, 4, Trace::End::Trace, 1),
+      ending(2, 0, 4, Trace::End::Trace, 1), ending(3, 0, 4, Trace::End::Singularity, 1)};
+  traces[1].end_trace = 0;  // on the unfinished one: goes with it
+  traces[2].end_trace = 1;  // on that one: goes too
+  traces[3].end_trace = 0;  // at a singularity: stays
+  EXPECT_EQ(layout::drop_dangling(traces), 3);
+  ASSERT_EQ(traces.size(), 1u);
+  EXPECT_EQ(traces[0].start_vertex, 3);
+}
+
+}  // namespace
+}  // namespace bimdf
