@@ -158,6 +158,9 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
                         {"trace_starts", g.trace_starts},
                         {"traces", g.traces},
                         {"removed_traces", g.removed_traces},
+                        {"banned_traces", g.banned_traces},
+                        {"seeds", g.seeds},
+                        {"cuts_across", g.cuts_across},
                         {"triangles", g.layout.mesh.num_faces()},
                         {"patches", g.layout.charts.size()}};
   s << "layout        " << g.traces << " separatrices from " << g.trace_starts << " vertices ("

@@ -278,6 +278,34 @@ CrossField compute_cross_field(const TriangleMesh& mesh, const Features& feature
       }
       x += y;
     }
+    // Unit-length rounds: the linear solve lets |u| shrink, so its zeros crowd where the
+    // constraints wind (a disc bounded by a feature circle gets one zero of order four at its
+    // centre, split by rounding into four singularities a few triangles apart: polar wedges).
+    // Pulling u towards its own normalised value, round after round, makes them repel like
+    // the vortices of a Ginzburg–Landau energy.
+    const double lambda = options.unit_pull * edge_sum / top.num_edges();
+    if (options.unit_rounds > 0 && options.unit_pull > 0) {
+      const double l2 = 1 / (lambda * lambda);
+      for (int f = 0; f < F; ++f)
+        if (unknown[f] >= 0)
+          for (int k = 0; k < 2; ++k)
+            entries.emplace_back(2 * unknown[f] + k, 2 * unknown[f] + k, l2 * frames.area[f]);
+      Eigen::SparseMatrix<double> pulled(2 * n, 2 * n);
+      pulled.setFromTriplets(entries.begin(), entries.end());
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> unit_solver(pulled);
+      for (int round = 0; round < options.unit_rounds; ++round) {
+        Eigen::VectorXd b = rhs;
+        for (int f = 0; f < F; ++f) {
+          if (unknown[f] < 0) continue;
+          const Complex z(x[2 * unknown[f]], x[2 * unknown[f] + 1]);
+          if (std::abs(z) <= 0) continue;
+          const Complex unit = z / std::abs(z);
+          b[2 * unknown[f]] += l2 * frames.area[f] * unit.real();
+          b[2 * unknown[f] + 1] += l2 * frames.area[f] * unit.imag();
+        }
+        x = unit_solver.solve(b);
+      }
+    }
     for (int f = 0; f < F; ++f)
       if (unknown[f] >= 0) u[f] = Complex(x[2 * unknown[f]], x[2 * unknown[f] + 1]);
   }

@@ -260,8 +260,8 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
       if (ban_round == options.max_ban_rounds) break;
       size_t before = trace.banned.size();
       ban_shallow_ends(graph.traces, shallow_deg * M_PI / 180, trace.seeds, trace.banned);
-      ban_short_to_curve(graph.traces, curve_vertex, options.short_to_curve_edges * edge_length,
-                         trace.banned);
+      ban_short_to_curve(graph.traces, curve_vertex, trace.seeds,
+                         options.short_to_curve_edges * edge_length, trace.banned);
       if (trace.banned.size() == before) break;
     }
     out.banned_traces = static_cast<int>(trace.banned.size());
@@ -334,6 +334,17 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
     const std::vector<int> seeds =
         seeds_for_non_disks(cut_top, patches, mesh.num_vertices(), out.indices.quarter_index);
     if (seeds.empty() || round == options.max_seed_rounds) {
+      // What seeds could not cut open (a ring with no regular input vertex in it) is cut
+      // across along mesh edges.
+      for (int pass = 0; pass < options.max_cut_across; ++pass) {
+        const int made = cut_across_non_disks(cut_top, patches, border, hints);
+        if (made == 0) break;
+        out.cuts_across += made;
+        patches = label_patches(cut_top, border, hints);
+      }
+      if (out.cuts_across > 0)
+        report("cut across", std::to_string(out.cuts_across) +
+                                 " paths along mesh edges cut what seeds could not");
       {
         int bad = 0, first = -1;
         std::map<std::string, int> kinds;

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-
+#include <set>
 
 namespace bimdf::layout {
 
@@ -34,6 +34,7 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
   }
   out.corners.assign(P, {});
   out.problem.assign(P, "");
+  out.not_disk.assign(P, false);
 
   // Topology per patch: V − E + F, and its boundary half-edges (edges inside a patch are
   // counted from both sides, so twice).
@@ -68,6 +69,7 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
     bool pinched = false;
     for (const auto& [v, n] : visits) pinched |= n > 1;
     if (euler != 1 || pinched) {
+      out.not_disk[p] = true;
       out.problem[p] = euler != 1
                            ? "not a disk (Euler characteristic " + std::to_string(euler) + ")"
                            : "its boundary touches itself";
@@ -118,6 +120,98 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
       out.problem[p] = std::to_string(out.corners[p].size()) + " boundary vertices";
   }
   return out;
+}
+
+}  // namespace bimdf::layout
+
+namespace bimdf::layout {
+
+int cut_across_non_disks(const SurfaceTopology& top, const Patches& patches,
+                         std::vector<bool>& boundary_edge, CornerHints& hints) {
+  constexpr int kSeveral = -3;  // a vertex on two boundary loops, or on a slit
+  const TriangleMesh& m = top.mesh();
+  const int F = m.num_faces(), V = m.num_vertices();
+  int cuts = 0;
+  std::vector<std::vector<int>> faces_of(patches.problem.size());
+  for (int f = 0; f < F; ++f)
+    if (patches.not_disk[patches.face_patch[f]]) faces_of[patches.face_patch[f]].push_back(f);
+  std::vector<int> loop(V, -1), parent(V, -2), parent_edge(V, -1);
+  for (const std::vector<int>& faces : faces_of) {
+    if (faces.empty()) continue;
+    std::vector<int> verts;
+    for (int f : faces)
+      for (int v : m.faces[f]) loop[v] = -1, parent[v] = -2, verts.push_back(v);
+    const int p = patches.face_patch[faces[0]];
+    // Edges the flood does not cross: those to another patch or the mesh border (the patch's
+    // true boundary), and trace or curve edges with the patch on both sides (slits: a trace
+    // across an annulus leaves an annulus cut open along it, one patch, not a chart).
+    const auto across = [&](int h) {
+      const int g = top.opposite(h);
+      return g < 0 || patches.face_patch[g / 3] != p;
+    };
+    const auto on_border = [&](int h) { return across(h) || boundary_edge[top.edge(h)]; };
+    // The true boundary's loops: cycles of its half-edges, each continued by the next one
+    // round the vertex it reaches. A cycle that passes a vertex twice (the patch wrapped round
+    // an island it touches there) counts as two loops, split there. A vertex on two loops or on
+    // a slit belongs to none: a path through or from it would pinch a patch there.
+    std::set<int> walked;
+    int loops = 0;
+    const auto mark = [&](int v, int l) { loop[v] = loop[v] == -1 || loop[v] == l ? l : kSeveral; };
+    for (int f : faces)
+      for (int i = 0; i < 3; ++i) {
+        const int h0 = 3 * f + i;
+        if (!across(h0) || walked.count(h0)) continue;
+        std::vector<int> cycle;
+        for (int h = h0; walked.insert(h).second;) {
+          cycle.push_back(top.from(h));
+          int g = SurfaceTopology::next(h);
+          while (!across(g)) g = SurfaceTopology::next(top.opposite(g));
+          h = g;
+        }
+        std::map<int, size_t> first_visit;
+        size_t a = 0, b = 0;
+        for (size_t k = 0; k < cycle.size() && b == 0; ++k) {
+          const auto [it, fresh] = first_visit.emplace(cycle[k], k);
+          if (!fresh) a = it->second, b = k;
+        }
+        for (size_t k = 0; k < cycle.size(); ++k)
+          mark(cycle[k], b > 0 && k > a && k < b ? loops + 1 : loops);
+        if (b > 0) loop[cycle[a]] = kSeveral;
+        loops += b > 0 ? 2 : 1;
+      }
+    for (int f : faces)
+      for (int i = 0; i < 3; ++i)
+        if (on_border(3 * f + i) && !across(3 * f + i))
+          for (int v : {top.from(3 * f + i), top.to(3 * f + i)}) loop[v] = kSeveral;
+    if (loops < 2) continue;
+    // Breadth first from loop 0 through the patch's inside to the first vertex of another
+    // loop: that path, made a boundary, joins the two loops (an annulus becomes a disk).
+    std::vector<int> queue;
+    for (int v : verts)
+      if (loop[v] == 0 && parent[v] == -2) parent[v] = -1, queue.push_back(v);
+    int reached = -1;
+    for (size_t q = 0; q < queue.size() && reached < 0; ++q) {
+      const int v = queue[q];
+      for (int h : top.outgoing(v)) {
+        if (patches.face_patch[h / 3] != p || on_border(h)) continue;
+        const int w = top.to(h);
+        if (parent[w] != -2) continue;
+        parent[w] = v, parent_edge[w] = top.edge(h);
+        if (loop[w] == kSeveral) continue;  // a pinch joins nothing
+        if (loop[w] > 0) {
+          reached = w;
+          break;
+        }
+        if (loop[w] < 0) queue.push_back(w);
+      }
+    }
+    if (reached < 0) continue;
+    // Where it reaches the other loop it ends like a trace ending on a line (a T-junction).
+    if (hints.ending_edge[reached] < 0) hints.ending_edge[reached] = parent_edge[reached];
+    for (int v = reached; parent[v] >= 0; v = parent[v]) boundary_edge[parent_edge[v]] = true;
+    ++cuts;
+  }
+  return cuts;
 }
 
 }  // namespace bimdf::layout

@@ -14,6 +14,7 @@ struct Patches {
   std::vector<std::vector<int>> corners;  // per patch, its corner vertices (any order)
   // Per patch: why it cannot be a chart of the layout ("" if it can): not a disk.
   std::vector<std::string> problem;
+  std::vector<bool> not_disk;  // per patch: its problem is its topology (not a disk, pinched)
   // Patches whose sharp turns were fewer than 3 or more than 6, given their 3 (or 6) sharpest.
   int adjusted = 0;
 };
@@ -41,5 +42,13 @@ struct CornerHints {
 // than 6 corners gets its 3 (or 6) sharpest turns.
 Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& boundary_edge,
                       const CornerHints& hints);
+
+// The last resort for patches that are not disks where seeding could not cut them
+// (generate.cpp): in each, the shortest path of mesh edges through its inside from one of its
+// boundary loops to another becomes a boundary (an annulus becomes a disk; a patch with more
+// holes loses one per call). Its far end is marked as a trace ending there (`hints`). Returns
+// how many paths were made; then label the patches again.
+int cut_across_non_disks(const SurfaceTopology& top, const Patches& patches,
+                         std::vector<bool>& boundary_edge, CornerHints& hints);
 
 }  // namespace bimdf::layout

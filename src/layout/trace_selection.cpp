@@ -44,11 +44,13 @@ void ban_shallow_ends(const std::vector<Trace>& traces, double shallow_angle,
 }
 
 void ban_short_to_curve(const std::vector<Trace>& traces, const std::vector<bool>& curve_vertex,
-                        double short_length, std::vector<std::array<int, 2>>& banned) {
+                        const std::vector<int>& seeds, double short_length,
+                        std::vector<std::array<int, 2>>& banned) {
   if (short_length <= 0) return;
   std::map<int, std::map<int, const Trace*>> short_ones;  // start vertex → way → trace
   for (const Trace& t : traces)
-    if (t.end == Trace::End::Curve && t.length < short_length && !curve_vertex[t.start_vertex])
+    if (t.end == Trace::End::Curve && t.length < short_length && !curve_vertex[t.start_vertex] &&
+        std::find(seeds.begin(), seeds.end(), t.start_vertex) == seeds.end())
       short_ones[t.start_vertex][t.start_way] = &t;
   for (const auto& [v, ways] : short_ones) {
     if (ways.size() < 2) continue;

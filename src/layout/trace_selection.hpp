@@ -27,8 +27,10 @@ void ban_shallow_ends(const std::vector<Trace>& traces, double shallow_angle,
 // practically on that curve: traced, they would cut off small three-sided patches between
 // them and the curve, each needing a singularity of its own in its pattern. Bans all but the
 // shortest of each such run of two or more; a lone short one stays (a stub joining the
-// singularity to the curve). `short_length` ≤ 0 bans nothing.
+// singularity to the curve). `seeds` are left alone, as by ban_shallow_ends. `short_length` ≤ 0
+// bans nothing.
 void ban_short_to_curve(const std::vector<Trace>& traces, const std::vector<bool>& curve_vertex,
-                        double short_length, std::vector<std::array<int, 2>>& banned);
+                        const std::vector<int>& seeds, double short_length,
+                        std::vector<std::array<int, 2>>& banned);
 
 }  // namespace bimdf::layout

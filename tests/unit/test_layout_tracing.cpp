@@ -1,12 +1,14 @@
-// The motorcycle graph of separatrices (src/layout/tracing.cpp) and the choice of the traces a
-// layout keeps (trace_selection.cpp), on flat grids with hand-made ways and singularities, where
-// the right answer is known.
+// The motorcycle graph of separatrices (src/layout/tracing.cpp), the choice of the traces a
+// layout keeps (trace_selection.cpp) and the last-resort cuts of patches that are not disks
+// (patches.cpp), on grids with hand-made ways, singularities and boundaries, where the right
+// answer is known.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "layout/face_frames.hpp"
+#include "layout/patches.hpp"
 #include "layout/surface_topology.hpp"
 #include "layout/trace_selection.hpp"
 #include "layout/tracing.hpp"
@@ -125,13 +127,15 @@ TEST(LayoutTraceSelection, OfEachRunOfShortWaysToACurveOnlyTheShortestStays) {
       // Vertex 3 is on a curve: its short ways are its own business.
       ending(3, 0, 4, Trace::End::Curve, 0.1), ending(3, 1, 4, Trace::End::Curve, 0.1)};
   std::vector<std::array<int, 2>> banned;
-  layout::ban_short_to_curve(traces, on_curve, 1.0, banned);
+  layout::ban_short_to_curve(traces, on_curve, {}, 1.0, banned);
   std::sort(banned.begin(), banned.end());
   // Vertex 0 keeps way 3 (the shortest of its run), vertex 1 way 2.
   const std::vector<std::array<int, 2>> expected = {{0, 0}, {0, 1}, {0, 4}, {1, 0}};
   EXPECT_EQ(banned, expected);
   banned.clear();
-  layout::ban_short_to_curve(traces, on_curve, 0, banned);
+  layout::ban_short_to_curve(traces, on_curve, {}, 0, banned);
+  EXPECT_TRUE(banned.empty());
+  layout::ban_short_to_curve(traces, on_curve, {0, 1}, 1.0, banned);  // seeds
   EXPECT_TRUE(banned.empty());
 }
 
@@ -145,6 +149,60 @@ TEST(LayoutTraceSelection, TracesEndingOnADroppedTraceAreDroppedToo) {
   EXPECT_EQ(layout::drop_dangling(traces), 3);
   ASSERT_EQ(traces.size(), 1u);
   EXPECT_EQ(traces[0].start_vertex, 3);
+}
+
+// Labels the cylinder's patches with `boundary` (per edge) and cuts across what is not a disk,
+// as generate.cpp does. Returns the patches and how many cuts were made.
+std::pair<layout::Patches, int> cut_until_disks(const layout::SurfaceTopology& top,
+                                                std::vector<bool> boundary) {
+  const int V = top.mesh().num_vertices();
+  layout::CornerHints hints;
+  hints.field_quarters.assign(V, 4);
+  for (int v = 0; v < V; ++v)
+    if (top.on_border(v)) hints.field_quarters[v] = 2;
+  hints.ending_edge.assign(V, -1);
+  layout::Patches patches = layout::label_patches(top, boundary, hints);
+  int cuts = 0;
+  for (int pass = 0; pass < 4; ++pass) {
+    const int made = layout::cut_across_non_disks(top, patches, boundary, hints);
+    if (made == 0) break;
+    cuts += made;
+    patches = layout::label_patches(top, boundary, hints);
+  }
+  return {patches, cuts};
+}
+
+TEST(LayoutPatches, AnAnnulusIsCutAcrossIntoDisks) {
+  const TriangleMesh m = test::cylinder(2, 12, 4);
+  const layout::SurfaceTopology top(m);
+  const std::vector<bool> none(top.num_edges(), false);
+  ASSERT_TRUE(
+      layout::label_patches(
+          top, none,
+          {std::vector<int>(m.num_vertices(), 4), std::vector<int>(m.num_vertices(), -1), {}})
+          .not_disk[0]);
+  // The first cut leaves one patch on both sides of it (a slit); the second, elsewhere,
+  // makes two disks.
+  const auto [patches, cuts] = cut_until_disks(top, none);
+  EXPECT_EQ(cuts, 2);
+  ASSERT_EQ(patches.problem.size(), 2u);
+  EXPECT_FALSE(patches.not_disk[0]);
+  EXPECT_FALSE(patches.not_disk[1]);
+}
+
+TEST(LayoutPatches, AnAnnulusSlitOpenByATraceIsCutIntoTwoDisks) {
+  // A trace from one border circle to the other (the line at angle 0) leaves one patch on
+  // both of its sides: not a chart. One more cut, elsewhere, makes two disks.
+  const TriangleMesh m = test::cylinder(2, 12, 4);
+  const layout::SurfaceTopology top(m);
+  std::vector<bool> slit(top.num_edges(), false);
+  for (int h = 0; h < 3 * m.num_faces(); ++h)
+    if (top.from(h) < 4 && top.to(h) == top.from(h) + 1) slit[top.edge(h)] = true;
+  const auto [patches, cuts] = cut_until_disks(top, slit);
+  EXPECT_EQ(cuts, 1);
+  ASSERT_EQ(patches.problem.size(), 2u);
+  EXPECT_FALSE(patches.not_disk[0]);
+  EXPECT_FALSE(patches.not_disk[1]);
 }
 
 }  // namespace

@@ -48,6 +48,11 @@ struct CrossFieldOptions {
   // shape operator diffuses over about this distance before its directions are read, so bumps
   // smaller than it do not steer the field. 0: the one-ring operator.
   double curvature_scale = 6;
+  // Rounds of pulling the field towards unit length (cross_field.cpp), with strength 1/ℓ² per
+  // unit area, ℓ = unit_pull average edge lengths: its singularities spread apart instead of
+  // crowding where the linear solve lets it vanish. 0 rounds: the linear solve alone.
+  int unit_rounds = 10;
+  double unit_pull = 3;
 };
 
 struct CrossField {

@@ -42,6 +42,9 @@ struct LayoutOptions {
   double max_trace_length = 4;
   // Rounds of seeding patches that are not disks (each round traces everything again).
   int max_seed_rounds = 3;
+  // Then rounds of cutting what is still not a disk across, along mesh edges from one of its
+  // boundary loops to another (patches.hpp, cut_across_non_disks).
+  int max_cut_across = 4;
   // Separatrices ending on a line at less than this angle (degrees) are not traced (see
   // tracing.hpp, Trace::end_angle), over up to max_ban_rounds tracings. 0: all are traced —
   // the default, since iso-lines of one family do not meet (30 suited the streamlines).
@@ -72,6 +75,7 @@ struct GeneratedLayout {
   int removed_traces = 0;  // unfinished, or ending on one that was removed
   int adjusted_patches = 0;  // patches given 3 or 6 corners where they had fewer or more
   int seeds = 0;             // regular vertices traced from to cut patches that were not disks
+  int cuts_across = 0;       // paths along mesh edges that cut what seeds could not
   int banned_traces = 0;     // separatrices not traced: shallow ends, short runs to a curve
   int folded_faces = 0;      // of the parametrization (trace_parametrization)
   bool traced_parametrization = false;  // false: the field's streamlines were traced
