@@ -2,6 +2,7 @@
 // where the surface's shape forces them, alignment to borders, creases and curvature.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "bimdf/layout/cross_field.hpp"
@@ -68,6 +69,75 @@ TEST(LayoutCrossField, SquareFollowsItsBorderWithoutInteriorSingularities) {
     EXPECT_EQ(s.quarter_index, 1);
   }
   for (const auto& d : r.field.direction) EXPECT_LT(off_cross(d, {1, 0, 0}, {0, 1, 0}), 1e-6);
+}
+
+// The square grid [−1, 1]² mapped onto the unit disc (x√(1 − y²/2), y√(1 − x²/2)).
+TriangleMesh disc(int n) {
+  TriangleMesh m = test::square(2, n);
+  for (auto& p : m.vertices) {
+    const double x = p[0] - 1, y = p[1] - 1;
+    p = {x * std::sqrt(1 - y * y / 2), y * std::sqrt(1 - x * x / 2), 0};
+  }
+  return m;
+}
+
+// disc(n) as the lid of a can: a wall of `rings` rings below its border, 2/n apart, open at
+// the bottom; the rim is a right-angled crease.
+TriangleMesh can(int n, int rings) {
+  TriangleMesh m = disc(n);
+  std::vector<int> rim;
+  for (int v = 0; v < m.num_vertices(); ++v)
+    if (std::hypot(m.vertices[v][0], m.vertices[v][1]) > 1 - 1e-9) rim.push_back(v);
+  std::sort(rim.begin(), rim.end(), [&](int a, int b) {
+    return std::atan2(m.vertices[a][1], m.vertices[a][0]) <
+           std::atan2(m.vertices[b][1], m.vertices[b][0]);
+  });
+  const int R = static_cast<int>(rim.size());
+  std::vector<int> above = rim;
+  for (int k = 1; k <= rings; ++k) {
+    std::vector<int> ring;
+    for (int v : rim) {
+      ring.push_back(m.num_vertices());
+      m.vertices.push_back({m.vertices[v][0], m.vertices[v][1], -2.0 * k / n});
+    }
+    // The disc is counter-clockwise seen from +z: the wall's faces point outwards.
+    for (int i = 0; i < R; ++i) {
+      const int j = (i + 1) % R;
+      m.faces.push_back({above[i], ring[i], ring[j]});
+      m.faces.push_back({above[i], ring[j], above[j]});
+    }
+    above = ring;
+  }
+  return m;
+}
+
+TEST(LayoutCrossField, ACansLidGetsItsFourSingularitiesSpreadApart) {
+  // Following the rim, the field turns once inside the lid: four valence-3 singularities. The
+  // linear solve alone, pulled round by the rim's curvature, crowds two of them near the
+  // centre (polar wedges of patches there); pulled towards unit length they spread out.
+  const TriangleMesh m = can(24, 8);
+  std::vector<double> closest;
+  for (int rounds : {0, 10}) {
+    layout::CrossFieldOptions o;
+    o.unit_rounds = rounds;
+    const FieldRun r = run(m, o);
+    std::vector<std::array<double, 3>> at;
+    for (const auto& s : r.indices.singularities) {
+      EXPECT_FALSE(s.on_border);
+      EXPECT_EQ(s.quarter_index, 1);
+      at.push_back(m.vertices[s.vertex]);
+    }
+    ASSERT_EQ(at.size(), 4u);
+    closest.push_back(1e9);
+    for (size_t i = 0; i < at.size(); ++i) {
+      EXPECT_NEAR(at[i][2], 0, 1e-12);  // on the lid
+      for (size_t j = i + 1; j < at.size(); ++j)
+        closest.back() =
+            std::min(closest.back(), std::hypot(at[i][0] - at[j][0], at[i][1] - at[j][1]));
+    }
+  }
+  EXPECT_LT(closest[0], 0.45);
+  EXPECT_GT(closest[1], 0.6);
 }
 
 TEST(LayoutCrossField, SphereGetsTheSmoothestFieldWithEightQuarterSingularities) {
