@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """The standalone remesher on the shared models (issue 51): each layout's triangle mesh alone
 (NAME.obj copied where no NAME.patch is beside it) through `bimdf remesh`, beside QuadWild's
-final meshes (../shared/data/layouts/quadwild_quality.tsv). Prints a markdown table.
+final meshes (../shared/data/layouts/quadwild_quality.tsv). Prints a markdown table, with each
+model's verdict against issue 51's bar: exit 0; a manifold mesh with the input's Euler
+characteristic and no border on a closed input; quads 0.5-2x QuadWild's; singular vertices at
+most 1.25x; mean and 5th-percentile scaled Jacobian at least QuadWild's; no inverted quad.
 
 Usage: bench/standalone_remesh.py [--bimdf build/bin/bimdf] [--data ../shared/data]
        [--only NAME,NAME] [--timeout SECONDS] [--keep DIR]
@@ -40,8 +43,8 @@ def main():
     print("| model | triangles | exit | quads | QuadWild | ratio | singular | QuadWild | ratio "
           "| SJ min | SJ mean | SJ p5 | QuadWild min / mean / p5 | inverted | Hausdorff % "
           "| traced along | field | param. | trace | cut | patches | quantize | tessellate "
-          "| total s |")
-    print("|" + "---|" * 24)
+          "| total s | topology | issue bar |")
+    print("|" + "---|" * 26)
     for name in names:
         bare = os.path.join(work, name + ".obj")
         shutil.copyfile(os.path.join(layouts, name, name + ".obj"), bare)
@@ -58,7 +61,7 @@ def main():
         if code != 0:
             print(f"| {name} | | {code} | | {q['quads']} | | | {q['singular_interior']} | | | | | "
                   f"{q['msj_min']} / {q['msj_mean']} / {q['msj_p05']} | | | | | | | | | | | "
-                  f"{wall:.1f} |")
+                  f"{wall:.1f} | | not: exit {code} |")
             continue
         j = json.loads(report)
         m, t = j["metrics"], j["time"]
@@ -67,6 +70,26 @@ def main():
         layout = j.get("layout", {})
         traced = f"{layout.get('traced_along', '')} ({layout.get('folded_faces', '')} folded)"
         tess = sum(t.get(k, 0) for k in ("patterns_s", "mapping_s", "smoothing_s", "polish_s"))
+        closed_in = j["input"]["border_loops"] == 0
+        topology = []
+        if not m["manifold"]:
+            topology.append("non-manifold")
+        if m["euler_characteristic"] != j["input"]["euler_characteristic"]:
+            topology.append(f"χ {m['euler_characteristic']} (input {j['input']['euler_characteristic']})")
+        if closed_in and m["boundary_edges"] > 0:
+            topology.append(f"{m['boundary_edges']} border edges")
+        misses = [] if not topology else ["topology"]
+        if not 0.5 <= m["faces"] / int(q["quads"]) <= 2:
+            misses.append("quads")
+        if singular > 1.25 * int(q["singular_interior"]):
+            misses.append("singular")
+        if sj["mean"] < float(q["msj_mean"]):
+            misses.append("mean")
+        if sj["p5"] < float(q["msj_p05"]):
+            misses.append("p5")
+        if m["inverted"] > 0:
+            misses.append("inverted")
+        verdict = "not: " + ", ".join(misses) if misses else "**met**"
         print(f"| {name} | {j['input']['triangles']} | 0 | {m['faces']} | {q['quads']} | "
               f"{m['faces'] / int(q['quads']):.2f} | {singular} | {q['singular_interior']} | "
               f"{singular / max(1, int(q['singular_interior'])):.2f} | {sj['min']:.4f} | "
@@ -74,7 +97,8 @@ def main():
               f"{q['msj_p05']} | {m['inverted']} | {100 * m['hausdorff_relative']:.3f} | "
               f"{traced} | {t['field_s']:.2f} | {t.get('parametrization_s', 0):.2f} | "
               f"{t['trace_s']:.2f} | {t['cut_s']:.2f} | "
-              f"{t['patches_s']:.2f} | {t['quantize_s']:.2f} | {tess:.2f} | {t['total_s']:.1f} |")
+              f"{t['patches_s']:.2f} | {t['quantize_s']:.2f} | {tess:.2f} | {t['total_s']:.1f} | "
+              f"{'; '.join(topology) or 'ok'} | {verdict} |")
         sys.stdout.flush()
     if not a.keep:
         shutil.rmtree(work)
