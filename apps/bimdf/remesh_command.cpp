@@ -324,7 +324,9 @@ int run_remesh(const RemeshCommandOptions& o) {
   const double read_s = seconds_since(start);
   if (o.standalone.progress)
     print_stage(read_s, "layout", std::to_string(layout.charts.size()) + " patches");
-  const quant::Quantization q = quant::quantize(layout, effective_quantize_options(o.quantize));
+  quant::QuantizeOptions quantize_options = effective_quantize_options(o.quantize);
+  quantize_options.model.min_border_loop = quant::kRemeshMinBorderLoop;
+  const quant::Quantization q = quant::quantize(layout, quantize_options);
   write_quantization_model(q, o.quantize);
   const double quantized_s = seconds_since(start);
   if (o.standalone.progress)

@@ -242,8 +242,9 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
                  double smooth_damping, int quality_rounds, int threads,
                  std::optional<double> time_limit, double sharp_angle) {
   const auto start = std::chrono::steady_clock::now();
-  const quant::QuantizeOptions options =
+  quant::QuantizeOptions options =
       quantize_options(scale, edge_length, target_faces, align, threads, time_limit);
+  options.model.min_border_loop = quant::kRemeshMinBorderLoop;
   const quant::SmoothingOptions smoothing =
       smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
   RemeshInput input = remesh_input_from_python(layout_arg, sharp_angle);

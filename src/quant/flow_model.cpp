@@ -35,6 +35,32 @@ Cost iso_cost(IsoObjective objective, double target, double weight) {
                                               : Cost::abs_deviation(target, weight);
 }
 
+// Per subside: its lower bound on the border (ModelOptions::min_border_loop), 1 elsewhere.
+// Border loops are the border subsides joined at their end vertices.
+std::vector<int64_t> border_subside_minimum(const Layout& layout, const ModelOptions& options) {
+  const int S = static_cast<int>(layout.subsides.size());
+  std::vector<int64_t> minimum(S, 1);
+  std::vector<int> root(layout.mesh.num_vertices());
+  for (size_t v = 0; v < root.size(); ++v) root[v] = static_cast<int>(v);
+  const auto find = [&](int v) {
+    while (root[v] != v) v = root[v] = root[root[v]];
+    return v;
+  };
+  for (const Subside& sub : layout.subsides)
+    if (sub.on_border() && !sub.vertices.empty())
+      root[find(sub.vertices.front())] = find(sub.vertices.back());
+  std::vector<int> per_loop(root.size(), 0);
+  for (const Subside& sub : layout.subsides)
+    if (sub.on_border() && !sub.vertices.empty()) ++per_loop[find(sub.vertices.front())];
+  for (int s = 0; s < S; ++s) {
+    const Subside& sub = layout.subsides[s];
+    if (!sub.on_border() || sub.vertices.empty()) continue;
+    const int k = per_loop[find(sub.vertices.front())];
+    minimum[s] = std::max<int64_t>(1, (options.min_border_loop + k - 1) / k);
+  }
+  return minimum;
+}
+
 }  // namespace
 
 FlowModel build_flow_model(const Layout& layout, const std::vector<double>& targets,
@@ -120,14 +146,15 @@ FlowModel build_flow_model(const Layout& layout, const std::vector<double>& targ
   auto iso_weight = [&](int c) {
     return options.alpha / static_cast<double>(layout.charts[c].subsides.size());
   };
+  const std::vector<int64_t> border_minimum = border_subside_minimum(layout, options);
   for (int s = 0; s < S; ++s) {
     const Subside& sub = layout.subsides[s];
     const int L = sub.charts[0], R = sub.charts[1];
     const double t = targets[s];
     if (sub.on_border()) {
       border_total += t;
-      const int e = p.add_edge(head(node[L][sub.sides[0]][0]), head(B), 1, kInfinity,
-                               Cost::quad_deviation(t, iso_weight(L)));
+      const int e = p.add_edge(head(node[L][sub.sides[0]][0]), head(B), border_minimum[s],
+                               kInfinity, Cost::quad_deviation(t, iso_weight(L)));
       model.subside_edges[s] = {e};
       continue;
     }

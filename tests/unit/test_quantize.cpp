@@ -20,6 +20,7 @@
 #include "bimdf/solve.hpp"
 #include "cli_fixture.hpp"
 #include "shared_layouts.hpp"
+#include "surface_fixtures.hpp"
 
 namespace bimdf::quant {
 namespace {
@@ -391,4 +392,38 @@ TEST_F(QuantizeFiles, CliQuantizesTheBundledExampleAndExportsItsModel) {
 }
 
 }  // namespace
+// An open cylinder as two charts (its halves): each border circle is two border subsides
+// whose targets are about one edge each. Quantized as the reference does, each circle gets two
+// edges (a hole a quad mesh cannot keep); with min_border_loop 3, at least three.
+TEST(QuantizeModel, BorderLoopsKeepAtLeastTheirMinimum) {
+  const TriangleMesh m = test::cylinder(1, 12, 3);
+  std::vector<int> face_chart;
+  for (const auto& f : m.faces) {
+    double x = 0, y = 0;
+    for (int v : f) x += m.vertices[v][0], y += m.vertices[v][1];
+    face_chart.push_back(std::atan2(y, x) > 0 ? 0 : 1);
+  }
+  // Vertex (i, j) is i·4 + j: angle 30°·i, height j/3. The halves meet at i = 0 and i = 6.
+  const std::vector<int> corners = {0, 3, 24, 27};
+  const Layout L = build_layout(m, face_chart, {corners, corners}, "<cylinder>");
+  for (int minimum : {1, 3}) {
+    QuantizeOptions o;
+    o.edge_length = 3;
+    o.model.min_border_loop = minimum;
+    const Quantization q = quantize(L, o);
+    std::map<int, int64_t> circle;  // height of the circle → its quantized length
+    for (size_t s = 0; s < L.subsides.size(); ++s)
+      if (L.subsides[s].on_border())
+        circle[static_cast<int>(std::lround(3 * m.vertices[L.subsides[s].vertices[0]][2]))] +=
+            q.lengths()[s];
+    ASSERT_EQ(circle.size(), 2u);
+    for (const auto& [height, length] : circle) {
+      if (minimum == 1)
+        EXPECT_EQ(length, 2) << "circle at height " << height;
+      else
+        EXPECT_GE(length, 3) << "circle at height " << height;
+    }
+  }
+}
+
 }  // namespace bimdf::quant

@@ -36,6 +36,9 @@ struct PairedWeights {
   double unalign_weight = 2;
 };
 
+// ModelOptions::min_border_loop for `remesh` (CLI and Python): every hole keeps 3 edges or more.
+inline constexpr int kRemeshMinBorderLoop = 3;
+
 struct ModelOptions {
   double alpha = 0.005;         // isometry weight; regularity gets 1 − alpha
   double nonquad_weight = 0.9;  // regularityNonQuadrilateralsWeight
@@ -43,6 +46,12 @@ struct ModelOptions {
   // "simple" virtual targets: a triangle's paired side is split where its regular pattern's
   // separatrix meets it; false: "half" (split in the middle; no isometry on quads).
   bool simple_targets = true;
+  // Quads along every border loop, at least: a loop quantized to 1 or 2 edges is no hole of a
+  // quad mesh (the standalone remesher's layouts of ChineseDragon-10kv and mannequin-devil
+  // lost a hole so). A loop of k border subsides gets a lower bound of ⌈min_border_loop / k⌉
+  // on each. 1 (the default): every subside at least 1, the reference quantizer's model, which
+  // `bimdf quantize` reproduces; remeshing uses kRemeshMinBorderLoop.
+  int min_border_loop = 1;
 };
 
 // A chain of quads between two singular charts (valence 3, 5 or 6), crossing one subside per
