@@ -262,6 +262,8 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
       ban_shallow_ends(graph.traces, shallow_deg * M_PI / 180, trace.seeds, trace.banned);
       ban_short_to_curve(graph.traces, curve_vertex, trace.seeds,
                          options.short_to_curve_edges * edge_length, trace.banned);
+      ban_seed_loops(graph.traces, curve_vertex, trace.seeds,
+                     options.short_to_curve_edges * edge_length, trace.banned);
       if (trace.banned.size() == before) break;
     }
     out.banned_traces = static_cast<int>(trace.banned.size());

@@ -76,4 +76,24 @@ void ban_short_to_curve(const std::vector<Trace>& traces, const std::vector<bool
   }
 }
 
+void ban_seed_loops(const std::vector<Trace>& traces, const std::vector<bool>& curve_vertex,
+                    const std::vector<int>& seeds, double short_length,
+                    std::vector<std::array<int, 2>>& banned) {
+  std::map<int, std::array<const Trace*, 4>> of_seed;
+  for (const Trace& t : traces)
+    if (t.start_ways == 4 && !curve_vertex[t.start_vertex] &&
+        std::find(seeds.begin(), seeds.end(), t.start_vertex) != seeds.end())
+      of_seed[t.start_vertex][t.start_way] = &t;
+  for (const auto& [v, ways] : of_seed)
+    for (int w = 0; w < 2; ++w) {
+      const Trace *a = ways[w], *b = ways[w + 2];
+      if (a && b && a->end == Trace::End::Curve && b->end == Trace::End::Curve &&
+          a->length < short_length && b->length < short_length) {
+        for (int other : {w + 1, (w + 3) % 4})
+          if (ways[other]) banned.push_back({v, other});
+        break;
+      }
+    }
+}
+
 }  // namespace bimdf::layout

@@ -33,4 +33,14 @@ void ban_short_to_curve(const std::vector<Trace>& traces, const std::vector<bool
                         const std::vector<int>& seeds, double short_length,
                         std::vector<std::array<int, 2>>& banned);
 
+// A seed (off the curves, four ways) whose two opposite separatrices both end on a curve
+// within `short_length` has cut a thin ring across already (a strip between two feature
+// loops): its other two, a loop round the ring parallel to the curves, are banned. They would
+// split the strip lengthwise into two thinner ones, and closing on themselves they may meet a
+// singularity near the seed first and leave a sliver. (Round a wider ring the loop stays: it
+// is structure the patches there use.)
+void ban_seed_loops(const std::vector<Trace>& traces, const std::vector<bool>& curve_vertex,
+                    const std::vector<int>& seeds, double short_length,
+                    std::vector<std::array<int, 2>>& banned);
+
 }  // namespace bimdf::layout

@@ -139,6 +139,28 @@ TEST(LayoutTraceSelection, OfEachRunOfShortWaysToACurveOnlyTheShortestStays) {
   EXPECT_TRUE(banned.empty());
 }
 
+TEST(LayoutTraceSelection, ASeedThatCutsAcrossLosesItsLoop) {
+  const std::vector<bool> on_curve(4, false);
+  const std::vector<Trace> traces = {
+      // Seed 0: ways 1 and 3 reach curves near by (across its thin ring); 0 and 2 go round.
+      ending(0, 0, 4, Trace::End::Trace, 5), ending(0, 1, 4, Trace::End::Curve, 1),
+      ending(0, 2, 4, Trace::End::Singularity, 5), ending(0, 3, 4, Trace::End::Curve, 1),
+      // Seed 3: both ways across reach curves, but one of them far: a wide ring, all stay.
+      ending(3, 0, 4, Trace::End::Curve, 1), ending(3, 2, 4, Trace::End::Curve, 4),
+      ending(3, 1, 4, Trace::End::Trace, 5), ending(3, 3, 4, Trace::End::Trace, 5),
+      // Seed 1: only one way reaches a curve: all stay.
+      ending(1, 0, 4, Trace::End::Curve, 1), ending(1, 1, 4, Trace::End::Trace, 1),
+      ending(1, 2, 4, Trace::End::Trace, 1), ending(1, 3, 4, Trace::End::Trace, 1),
+      // Vertex 2 is no seed.
+      ending(2, 0, 4, Trace::End::Curve, 1), ending(2, 2, 4, Trace::End::Curve, 1),
+      ending(2, 1, 4, Trace::End::Trace, 1)};
+  std::vector<std::array<int, 2>> banned;
+  layout::ban_seed_loops(traces, on_curve, {0, 1, 3}, 2.0, banned);
+  std::sort(banned.begin(), banned.end());
+  const std::vector<std::array<int, 2>> expected = {{0, 0}, {0, 2}};
+  EXPECT_EQ(banned, expected);
+}
+
 TEST(LayoutTraceSelection, TracesEndingOnADroppedTraceAreDroppedToo) {
   std::vector<Trace> traces = {
       ending(0, 0, 4, Trace::End::Unfinished, 1), ending(1, 0, 4, Trace::End::Trace, 1),
