@@ -79,6 +79,7 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
   // the two boundary edges that bound it (leaving and reaching the vertex along its border).
   struct Sector {
     double angle = 0, parameter_quarters = 0;
+    bool folded = false;  // a face of the sector is folded (or flat) in the parameter plane
     int edge_out = -1, edge_in = -1;
   };
   std::vector<std::map<int, Sector>> sector(P);
@@ -92,14 +93,17 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
     auto it = sector[p].find(top.from(h));
     if (it == sector[p].end()) continue;
     it->second.angle += top.corner_angle(h);
-    if (!hints.parameter_quarters.empty())
+    if (!hints.parameter_quarters.empty()) {
       it->second.parameter_quarters += hints.parameter_quarters[h];
+      it->second.folded |= hints.parameter_quarters[h] <= 0;
+    }
   }
   for (int p = 0; p < P; ++p) {
     if (!out.problem[p].empty()) continue;
     std::vector<std::pair<double, int>> by_turn;  // the sector in quarter turns, vertex
     for (const auto& [v, sec] : sector[p]) {
-      double quarters = hints.parameter_quarters.empty()
+      // Where the map folds, its angles mean nothing: the sector's share of the field's turns.
+      double quarters = hints.parameter_quarters.empty() || sec.folded
                             ? sec.angle / total[v] * hints.field_quarters[v]
                             : sec.parameter_quarters;
       const int end = hints.ending_edge[v];

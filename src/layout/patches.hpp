@@ -30,7 +30,8 @@ struct CornerHints {
   std::vector<int> ending_edge;
   // Per half-edge h (when not empty): the angle of h's face at h's origin in the parameter
   // plane the traces followed (seamless.hpp), in quarter turns. A sector's turn is then their
-  // sum, which is exact where traces are iso-lines, instead of its share of the field's turns.
+  // sum, which is exact where traces are iso-lines, instead of its share of the field's turns
+  // (still used for a sector with a face folded or flat in the parameter plane, angle ≤ 0).
   std::vector<double> parameter_quarters;
 };
 

@@ -194,6 +194,31 @@ std::pair<layout::Patches, int> cut_until_disks(const layout::SurfaceTopology& t
   return {patches, cuts};
 }
 
+TEST(LayoutPatches, WhereTheMapFoldsCornersComeFromTheFieldsTurns) {
+  // The square [0, 1]² as one patch; the parameter angles are the true ones but at the middle
+  // of its bottom side, where the map is made to fold: a negative angle there must not make a
+  // corner (it did: five corners), the sector's share of the field's turns (2) is used.
+  const TriangleMesh m = test::square(1, 2);
+  const layout::SurfaceTopology top(m);
+  std::vector<bool> border(top.num_edges());
+  for (int e = 0; e < top.num_edges(); ++e) border[e] = top.opposite(top.edge_half_edge(e)) < 0;
+  layout::CornerHints hints;
+  hints.field_quarters.assign(m.num_vertices(), 4);
+  for (int v = 0; v < m.num_vertices(); ++v)
+    if (top.on_border(v)) hints.field_quarters[v] = 2;
+  for (int v : {0, 2, 6, 8}) hints.field_quarters[v] = 1;  // the square's corners
+  hints.ending_edge.assign(m.num_vertices(), -1);
+  hints.parameter_quarters.resize(3 * m.num_faces());
+  for (int h = 0; h < 3 * m.num_faces(); ++h)
+    hints.parameter_quarters[h] = top.from(h) == 3 ? -0.1 : top.corner_angle(h) / (M_PI / 2);
+  const layout::Patches patches = layout::label_patches(top, border, hints);
+  ASSERT_EQ(patches.corners.size(), 1u);
+  std::vector<int> corners = patches.corners[0];
+  std::sort(corners.begin(), corners.end());
+  EXPECT_EQ(corners, (std::vector<int>{0, 2, 6, 8}));
+  EXPECT_EQ(patches.problem[0], "");
+}
+
 TEST(LayoutPatches, AnAnnulusIsCutAcrossIntoDisks) {
   const TriangleMesh m = test::cylinder(2, 12, 4);
   const layout::SurfaceTopology top(m);
