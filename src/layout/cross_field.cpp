@@ -175,10 +175,8 @@ CrossField compute_cross_field(const TriangleMesh& mesh, const Features& feature
   field.curvature_weight.assign(F, 0);
   if (F == 0) return field;
 
-  double edge_sum = 0;
-  for (int e = 0; e < top.num_edges(); ++e)
-    edge_sum += detail::norm(edge_vector(top, top.edge_half_edge(e)));
-  const double length = options.alignment_length * edge_sum / top.num_edges();
+  const double edge_length = top.mean_edge_length();
+  const double length = options.alignment_length * edge_length;
   const double eps = 1 / (length * length);
 
   const std::vector<Complex> fixed =
@@ -186,7 +184,7 @@ CrossField compute_cross_field(const TriangleMesh& mesh, const Features& feature
   std::vector<Complex> target(F, 0.0);
   if (options.align_to_curvature) {
     std::vector<double> difference;
-    const double scale = options.curvature_scale * edge_sum / top.num_edges();
+    const double scale = options.curvature_scale * edge_length;
     curvature_crosses(top, frames, scale * scale, target, difference);
     for (int f = 0; f < F; ++f) field.curvature_weight[f] = std::min(1.0, difference[f] * length);
   }
@@ -283,7 +281,7 @@ CrossField compute_cross_field(const TriangleMesh& mesh, const Features& feature
     // centre, split by rounding into four singularities a few triangles apart: polar wedges).
     // Pulling u towards its own normalised value, round after round, makes them repel like
     // the vortices of a Ginzburg–Landau energy.
-    const double lambda = options.unit_pull * edge_sum / top.num_edges();
+    const double lambda = options.unit_pull * edge_length;
     if (options.unit_rounds > 0 && options.unit_pull > 0) {
       const double l2 = 1 / (lambda * lambda);
       for (int f = 0; f < F; ++f)

@@ -14,6 +14,9 @@ namespace bimdf::layout {
 // checked them).
 std::vector<bool> feature_edge_flags(const SurfaceTopology& top, const Features& features);
 
+// Per vertex of `top`: whether it is an end of a flagged edge (`edge_flag` per undirected edge).
+std::vector<bool> vertices_of_edges(const SurfaceTopology& top, const std::vector<bool>& edge_flag);
+
 // Sharp edges (per undirected edge of `top`) cleaned of noise as FeatureOptions::erode_dilate
 // says, with `steps` erosions: spiky triangles' edges dropped, dangling ends eroded and the
 // remaining curves grown back from their eroded ends, small sets away from the border dropped.

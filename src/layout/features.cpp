@@ -180,6 +180,17 @@ std::vector<bool> feature_edge_flags(const SurfaceTopology& top, const Features&
   return flag;
 }
 
+std::vector<bool> vertices_of_edges(const SurfaceTopology& top,
+                                    const std::vector<bool>& edge_flag) {
+  std::vector<bool> on(top.mesh().num_vertices(), false);
+  for (int e = 0; e < top.num_edges(); ++e)
+    if (edge_flag[e]) {
+      const int h = top.edge_half_edge(e);
+      on[top.from(h)] = on[top.to(h)] = true;
+    }
+  return on;
+}
+
 Features detect_features(const TriangleMesh& mesh, const FeatureOptions& options) {
   const SurfaceTopology top(mesh);
   const double limit = std::cos(options.sharp_angle_deg * M_PI / 180);

@@ -228,18 +228,8 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   const double shallow_deg =
       out.traced_parametrization ? options.shallow_angle_deg : options.streamline_shallow_angle_deg;
 
-  std::vector<bool> curve_vertex(mesh.num_vertices(), false);
-  for (int e = 0; e < top.num_edges(); ++e)
-    if (curve[e]) {
-      const int h = top.edge_half_edge(e);
-      curve_vertex[top.from(h)] = curve_vertex[top.to(h)] = true;
-    }
-  double edge_length = 0;
-  for (int e = 0; e < top.num_edges(); ++e) {
-    const int h = top.edge_half_edge(e);
-    edge_length += detail::norm(detail::sub(mesh.vertices[top.to(h)], mesh.vertices[top.from(h)]));
-  }
-  edge_length /= std::max(1, top.num_edges());
+  const std::vector<bool> curve_vertex = vertices_of_edges(top, curve);
+  const double short_length = options.short_to_curve_edges * top.mean_edge_length();
   TraceOptions trace;
   trace.snap = snap;
   trace.max_length = options.max_trace_length;
@@ -260,10 +250,8 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
       if (ban_round == options.max_ban_rounds) break;
       size_t before = trace.banned.size();
       ban_shallow_ends(graph.traces, shallow_deg * M_PI / 180, trace.seeds, trace.banned);
-      ban_short_to_curve(graph.traces, curve_vertex, trace.seeds,
-                         options.short_to_curve_edges * edge_length, trace.banned);
-      ban_seed_loops(graph.traces, curve_vertex, trace.seeds,
-                     options.short_to_curve_edges * edge_length, trace.banned);
+      ban_short_to_curve(graph.traces, curve_vertex, trace.seeds, short_length, trace.banned);
+      ban_seed_loops(graph.traces, curve_vertex, trace.seeds, short_length, trace.banned);
       if (trace.banned.size() == before) break;
     }
     out.banned_traces = static_cast<int>(trace.banned.size());

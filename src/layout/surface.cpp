@@ -231,17 +231,13 @@ SurfaceInfo describe_surface(const TriangleMesh& mesh) {
   }
   for (int v = 0; v < mesh.num_vertices(); ++v)
     if (vertex_component[v] >= 0) euler[vertex_component[v]] += 1;
-  double edge_sum = 0;
-  for (int e = 0; e < top.num_edges(); ++e) {
-    const int h = top.edge_half_edge(e);
-    euler[top.face_component()[h / 3]] -= 1;
-    edge_sum += norm(sub(mesh.vertices[top.to(h)], mesh.vertices[top.from(h)]));
-  }
+  for (int e = 0; e < top.num_edges(); ++e)
+    euler[top.face_component()[top.edge_half_edge(e) / 3]] -= 1;
   for (const auto& loop : top.border_loops())
     ++info.component_border_loops[top.face_component()[loop[0] / 3]];
   for (int c = 0; c < C; ++c)
     info.component_genus.push_back((2 - euler[c] - info.component_border_loops[c]) / 2);
-  info.average_edge_length = info.edges > 0 ? edge_sum / info.edges : 0;
+  info.average_edge_length = top.mean_edge_length();
   P3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
   for (const P3& p : mesh.vertices)
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);

@@ -84,6 +84,16 @@ std::vector<int> SurfaceTopology::outgoing(int v) const {
   return ring;
 }
 
+double SurfaceTopology::mean_edge_length() const {
+  const auto& p = mesh_->vertices;
+  double sum = 0;
+  for (int e = 0; e < num_edges(); ++e) {
+    const int h = edge_half_edge(e);
+    sum += detail::norm(detail::sub(p[to(h)], p[from(h)]));
+  }
+  return num_edges() > 0 ? sum / num_edges() : 0;
+}
+
 double SurfaceTopology::corner_angle(int h) const {
   const auto& p = mesh_->vertices;
   const detail::Vec3 a = detail::sub(p[to(h)], p[from(h)]);

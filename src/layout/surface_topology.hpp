@@ -41,6 +41,9 @@ class SurfaceTopology {
   int rotate_ccw(int h) const { return opposite(prev(h)); }
   // The angle of h's face at h's origin (between h and its face's previous edge), radians.
   double corner_angle(int h) const;
+  // The mean length of the undirected edges (0 without edges): the unit of the layout stages'
+  // distances (alignment length, approach radius, short traces).
+  double mean_edge_length() const;
 
   // Border loops as half-edges in walking order (each has no opposite; the mesh's faces lie to
   // the left).

@@ -6,6 +6,13 @@
 #include <set>
 
 namespace bimdf::layout {
+namespace {
+
+bool is_seed(const std::vector<int>& seeds, int v) {
+  return std::find(seeds.begin(), seeds.end(), v) != seeds.end();
+}
+
+}  // namespace
 
 int drop_dangling(std::vector<Trace>& traces) {
   std::vector<bool> removed(traces.size(), false);
@@ -39,7 +46,7 @@ void ban_shallow_ends(const std::vector<Trace>& traces, double shallow_angle,
                       const std::vector<int>& seeds, std::vector<std::array<int, 2>>& banned) {
   for (const Trace& t : traces)
     if ((t.end == Trace::End::Trace || t.end == Trace::End::Curve) && t.end_angle < shallow_angle &&
-        std::find(seeds.begin(), seeds.end(), t.start_vertex) == seeds.end())
+        !is_seed(seeds, t.start_vertex))
       banned.push_back({t.start_vertex, t.start_way});
 }
 
@@ -50,7 +57,7 @@ void ban_short_to_curve(const std::vector<Trace>& traces, const std::vector<bool
   std::map<int, std::map<int, const Trace*>> short_ones;  // start vertex → way → trace
   for (const Trace& t : traces)
     if (t.end == Trace::End::Curve && t.length < short_length && !curve_vertex[t.start_vertex] &&
-        std::find(seeds.begin(), seeds.end(), t.start_vertex) == seeds.end())
+        !is_seed(seeds, t.start_vertex))
       short_ones[t.start_vertex][t.start_way] = &t;
   for (const auto& [v, ways] : short_ones) {
     if (ways.size() < 2) continue;
@@ -81,8 +88,7 @@ void ban_seed_loops(const std::vector<Trace>& traces, const std::vector<bool>& c
                     std::vector<std::array<int, 2>>& banned) {
   std::map<int, std::array<const Trace*, 4>> of_seed;
   for (const Trace& t : traces)
-    if (t.start_ways == 4 && !curve_vertex[t.start_vertex] &&
-        std::find(seeds.begin(), seeds.end(), t.start_vertex) != seeds.end())
+    if (t.start_ways == 4 && !curve_vertex[t.start_vertex] && is_seed(seeds, t.start_vertex))
       of_seed[t.start_vertex][t.start_way] = &t;
   for (const auto& [v, ways] : of_seed)
     for (int w = 0; w < 2; ++w) {

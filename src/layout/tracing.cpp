@@ -5,6 +5,8 @@
 #include <cmath>
 #include <queue>
 
+#include "layout/feature_flags.hpp"
+
 namespace bimdf::layout {
 namespace {
 
@@ -66,22 +68,12 @@ class Tracer {
     is_seed_.assign(V, false);
     for (int v : options.seeds)
       if (v >= 0 && v < V) is_seed_[v] = true;
-    curve_vertex_.assign(V, false);
-    for (int e = 0; e < top.num_edges(); ++e)
-      if (curve_[e]) {
-        const int h = top.edge_half_edge(e);
-        curve_vertex_[top.from(h)] = curve_vertex_[top.to(h)] = true;
-      }
+    curve_vertex_ = vertices_of_edges(top, curve_);
     Vec3 lo = m_.vertices[0], hi = m_.vertices[0];
     for (const Vec3& p : m_.vertices)
       for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
     max_length_ = options.max_length * detail::norm(detail::sub(hi, lo));
-    double edges = 0;
-    for (int e = 0; e < top.num_edges(); ++e) {
-      const int h = top.edge_half_edge(e);
-      edges += detail::norm(detail::sub(m_.vertices[top.to(h)], m_.vertices[top.from(h)]));
-    }
-    approach_radius_ = options.approach_radius * edges / std::max(1, top.num_edges());
+    approach_radius_ = options.approach_radius * top.mean_edge_length();
   }
 
   MotorcycleGraph run();
