@@ -19,7 +19,8 @@ std::vector<bool> vertices_of_edges(const SurfaceTopology& top, const std::vecto
 
 // Sharp edges (per undirected edge of `top`) cleaned of noise as FeatureOptions::erode_dilate
 // says, with `steps` erosions: spiky triangles' edges dropped, dangling ends eroded and the
-// remaining curves grown back from their eroded ends, small sets away from the border dropped.
+// remaining curves grown back from their eroded ends, small sets away from the border dropped,
+// the flatter side of each small lens dropped.
 // `steps` ≤ 0 returns `sharp` as it is.
 std::vector<bool> clean_sharp_edges(const SurfaceTopology& top, std::vector<bool> sharp, int steps);
 

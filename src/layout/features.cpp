@@ -162,12 +162,129 @@ std::vector<bool> erode_dilate(const SurfaceTopology& top, const std::vector<boo
   return drop_small_components(top, std::move(kept), border, 2 * steps + 1);
 }
 
+// Drops one side of every lens the curves leave: a small region bounded by curves alone
+// whose boundary has fewer than 3 sharp turns (a scan's crease that forks and joins again, a
+// chamfer seen as two creases meeting at shallow angles). A patch there would need 3 corners it
+// does not have: the layout would force one onto a straight curve, a valence-2 vertex in the
+// quad mesh, and its two cusps would pinch quads flat. Of the boundary's pieces between curve
+// junctions the one bending least (mean dihedral angle; border edges stay) is dropped, and the
+// regions are looked at again.
+std::vector<bool> drop_lens_branches(const SurfaceTopology& top, std::vector<bool> sharp,
+                                     int max_faces) {
+  const TriangleMesh& m = top.mesh();
+  const int F = m.num_faces(), V = m.num_vertices(), E = top.num_edges();
+  std::vector<double> total(V, 0);
+  for (int h = 0; h < 3 * F; ++h) total[top.from(h)] += top.corner_angle(h);
+  const auto border = [&](int e) { return top.opposite(top.edge_half_edge(e)) < 0; };
+  const auto dihedral = [&](int e) {
+    const int h = top.edge_half_edge(e), g = top.opposite(h);
+    return std::acos(std::clamp(detail::dot(detail::normalized(detail::triangle_normal(m, h / 3)),
+                                            detail::normalized(detail::triangle_normal(m, g / 3))),
+                                -1.0, 1.0));
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<int> degree(V, 0);
+    for (int e = 0; e < E; ++e)
+      if (sharp[e] || border(e)) {
+        const int h = top.edge_half_edge(e);
+        ++degree[top.from(h)], ++degree[top.to(h)];
+      }
+    // One pass looks at every region once; a region beside one that lost a piece has changed
+    // (`touched`) and waits for the next pass.
+    std::vector<int> region(F, -1);
+    std::vector<char> touched(F, 0);
+    for (int f0 = 0; f0 < F; ++f0) {
+      if (region[f0] >= 0) continue;
+      std::vector<int> faces{f0};
+      region[f0] = f0;
+      bool waits = false;
+      for (size_t i = 0; i < faces.size(); ++i) {
+        waits |= touched[faces[i]];
+        for (int k = 0; k < 3; ++k) {
+          const int h = 3 * faces[i] + k, g = top.opposite(h);
+          if (g < 0 || sharp[top.edge(h)] || region[g / 3] >= 0) continue;
+          region[g / 3] = f0;
+          faces.push_back(g / 3);
+        }
+      }
+      if (waits || faces.size() > static_cast<size_t>(max_faces)) continue;
+      // Its boundary as one loop of half-edges (next boundary half-edge from each vertex).
+      std::map<int, int> next_from;
+      std::map<int, double> sector;
+      bool disk = true;
+      for (int f : faces)
+        for (int k = 0; k < 3; ++k) {
+          const int h = 3 * f + k, g = top.opposite(h);
+          sector[top.from(h)] += top.corner_angle(h);
+          if (g >= 0 && region[g / 3] == f0) continue;
+          disk &= next_from.emplace(top.from(h), h).second;
+        }
+      if (!disk || next_from.empty()) continue;
+      std::vector<int> loop{next_from.begin()->second};
+      while (loop.size() <= next_from.size()) {
+        const auto it = next_from.find(top.to(loop.back()));
+        if (it == next_from.end() || it->second == loop.front()) break;
+        loop.push_back(it->second);
+      }
+      if (loop.size() != next_from.size()) continue;  // several boundary loops
+      // Its turns, in quarters as the surface's angles count them (the field is not known yet).
+      std::vector<char> ends(loop.size(), 0);  // where the pieces to choose from begin
+      int turns = 0, junctions = 0;
+      bool cusp = false;
+      for (size_t i = 0; i < loop.size(); ++i) {
+        const int v = top.from(loop[i]);
+        const double quarters = sector[v] / total[v] * (top.on_border(v) ? 2 : 4);
+        turns += quarters < 1.5;
+        cusp |= quarters < 0.5;
+        junctions += ends[i] = degree[v] >= 3;
+      }
+      // Without a junction, a closed curve: a lens if it pinches (a round cap keeps its rim; its
+      // field has a singularity inside whose traces cut it), and then cut at its turns.
+      if (turns >= 3 || (junctions == 0 && !cusp)) continue;
+      for (size_t i = 0; junctions == 0 && i < loop.size(); ++i) {
+        const int v = top.from(loop[i]);
+        ends[i] = sector[v] / total[v] * (top.on_border(v) ? 2 : 4) < 1.5;
+      }
+      const auto first = std::find(ends.begin(), ends.end(), 1) - ends.begin();
+      if (first == static_cast<std::ptrdiff_t>(ends.size())) continue;
+      std::rotate(ends.begin(), ends.begin() + first, ends.end());
+      std::rotate(loop.begin(), loop.begin() + first, loop.end());
+      int best_begin = -1, best_end = -1;
+      double best_bend = 0;
+      for (size_t begin = 0; begin < loop.size();) {
+        size_t end = begin + 1;
+        while (end < loop.size() && !ends[end]) ++end;
+        bool on_border = false;
+        double bend = 0;
+        for (size_t i = begin; i < end; ++i) {
+          const int e = top.edge(loop[i]);
+          on_border |= border(e);
+          if (!on_border) bend += dihedral(e);
+        }
+        bend /= static_cast<double>(end - begin);
+        if (!on_border && (best_begin < 0 || bend < best_bend))
+          best_begin = static_cast<int>(begin), best_end = static_cast<int>(end), best_bend = bend;
+        begin = end;
+      }
+      if (best_begin < 0) continue;
+      for (int i = best_begin; i < best_end; ++i) {
+        sharp[top.edge(loop[i])] = false;
+        touched[top.opposite(loop[i]) / 3] = 1;
+      }
+      changed = true;
+    }
+  }
+  return sharp;
+}
+
 }  // namespace
 
 std::vector<bool> clean_sharp_edges(const SurfaceTopology& top, std::vector<bool> sharp,
                                     int steps) {
   if (steps <= 0) return sharp;
-  return erode_dilate(top, drop_spiky_triangles(top, std::move(sharp)), steps);
+  return drop_lens_branches(
+      top, erode_dilate(top, drop_spiky_triangles(top, std::move(sharp)), steps), 8 * steps);
 }
 
 std::vector<bool> feature_edge_flags(const SurfaceTopology& top, const Features& features) {

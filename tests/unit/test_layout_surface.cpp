@@ -212,6 +212,16 @@ TEST(LayoutSurface, ReadsObjOffAndPlyAlike) {
   EXPECT_EQ(read_error(two), two + ":3: face 0 has 2 vertices, expected at least 3");
 }
 
+// The undirected edge of `top` between vertices a and b.
+int edge_between(const layout::SurfaceTopology& top, int a, int b) {
+  for (int h : top.outgoing(a))
+    if (top.to(h) == b) return top.edge(h);
+  for (int h : top.outgoing(b))
+    if (top.to(h) == a) return top.edge(h);
+  ADD_FAILURE() << a << "-" << b << " is no edge";
+  return 0;
+}
+
 TEST(LayoutFeatures, NoiseIsCleanedAndLongCurvesKeepTheirLength) {
   // A 20 × 20 grid (vertex (i, j) is i·21 + j) with hand-set sharp edges: a long curve along
   // j = 10 with a short spur, a lone spiky triangle, the four edges of one cell (a small loop)
@@ -219,14 +229,7 @@ TEST(LayoutFeatures, NoiseIsCleanedAndLongCurvesKeepTheirLength) {
   const TriangleMesh grid = test::square(1, 20);
   const layout::SurfaceTopology top(grid);
   const auto id = [](int i, int j) { return i * 21 + j; };
-  const auto edge = [&](int a, int b) {
-    for (int h : top.outgoing(a))
-      if (top.to(h) == b) return top.edge(h);
-    for (int h : top.outgoing(b))
-      if (top.to(h) == a) return top.edge(h);
-    ADD_FAILURE() << a << "-" << b << " is no edge";
-    return 0;
-  };
+  const auto edge = [&](int a, int b) { return edge_between(top, a, b); };
   std::vector<bool> sharp(top.num_edges(), false), expected = sharp;
   for (int i = 2; i < 18; ++i) sharp[edge(id(i, 10), id(i + 1, 10))] = true;
   expected = sharp;
@@ -242,6 +245,35 @@ TEST(LayoutFeatures, NoiseIsCleanedAndLongCurvesKeepTheirLength) {
   for (int j = 12; j < 18; ++j) sharp[edge(id(5, j), id(5, j + 1))] = true;
   EXPECT_EQ(layout::clean_sharp_edges(top, sharp, 4), expected);
   EXPECT_EQ(layout::clean_sharp_edges(top, sharp, 0), sharp);
+}
+
+TEST(LayoutFeatures, OfALensOnlyTheSideThatBendsMoreIsKept) {
+  // A 20 × 20 grid folded into a valley along j = 10 (a crease of ~33° from border to border)
+  // where a second curve leaves the crease at (6, 10) and joins it again at (10, 10) over
+  // j = 10.8: between them a lens of 6 triangles with 2 turns (38.7° at both ends), its flat
+  // side dropped. The same second curve over a rectangle (right angles at both ends) bounds 4
+  // turns and stays.
+  TriangleMesh grid = test::square(1, 20);
+  const auto id = [](int i, int j) { return i * 21 + j; };
+  // Cell (9, 10) cut along its other diagonal, so that (9, 11)-(10, 10) is an edge.
+  const int cell = 2 * (9 * 20 + 10);
+  grid.faces[cell] = {id(9, 10), id(10, 10), id(9, 11)};
+  grid.faces[cell + 1] = {id(10, 10), id(10, 11), id(9, 11)};
+  for (int i = 7; i <= 9; ++i) grid.vertices[id(i, 11)][1] = 10.8 / 20;
+  for (auto& p : grid.vertices) p[2] = 0.3 * std::fabs(p[1] - 0.5);
+  const layout::SurfaceTopology top(grid);
+  const auto edge = [&](int a, int b) { return edge_between(top, a, b); };
+  std::vector<bool> crease(top.num_edges(), false);
+  for (int i = 0; i < 20; ++i) crease[edge(id(i, 10), id(i + 1, 10))] = true;
+  std::vector<bool> lens = crease;
+  lens[edge(id(6, 10), id(7, 11))] = lens[edge(id(9, 11), id(10, 10))] = true;
+  for (int i = 7; i < 9; ++i) lens[edge(id(i, 11), id(i + 1, 11))] = true;
+  EXPECT_EQ(layout::clean_sharp_edges(top, lens, 4), crease);
+
+  std::vector<bool> box = crease;
+  box[edge(id(6, 10), id(6, 11))] = box[edge(id(10, 11), id(10, 10))] = true;
+  for (int i = 6; i < 10; ++i) box[edge(id(i, 11), id(i + 1, 11))] = true;
+  EXPECT_EQ(layout::clean_sharp_edges(top, box, 4), box);
 }
 
 TEST(LayoutFeatures, CubeCreasesAndCorners) {

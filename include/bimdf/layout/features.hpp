@@ -26,8 +26,10 @@ struct FeatureOptions {
   // curve with a free end that is at most twice this many edges long disappears; longer curves
   // keep their full length, without the short spurs that branched off them. Also dropped,
   // since erosion cannot shrink them: the edges of triangles whose three edges are all sharp
-  // (a lone spike), and sets of connected sharp edges away from the border with at most twice
-  // this many edges (a small loop). 0 keeps every sharp edge.
+  // (a lone spike), sets of connected sharp edges away from the border with at most twice
+  // this many edges (a small loop), and the flatter side of every lens — a region of at most
+  // 8 × this many triangles bounded by curves with fewer than 3 sharp turns (a crease that
+  // forks and joins again). 0 keeps every sharp edge.
   int erode_dilate = 4;
 };
 
