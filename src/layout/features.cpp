@@ -284,7 +284,7 @@ std::vector<bool> clean_sharp_edges(const SurfaceTopology& top, std::vector<bool
                                     int steps) {
   if (steps <= 0) return sharp;
   return drop_lens_branches(
-      top, erode_dilate(top, drop_spiky_triangles(top, std::move(sharp)), steps), 8 * steps);
+      top, erode_dilate(top, drop_spiky_triangles(top, std::move(sharp)), steps), 16 * steps);
 }
 
 std::vector<bool> feature_edge_flags(const SurfaceTopology& top, const Features& features) {

@@ -28,7 +28,7 @@ struct FeatureOptions {
   // since erosion cannot shrink them: the edges of triangles whose three edges are all sharp
   // (a lone spike), sets of connected sharp edges away from the border with at most twice
   // this many edges (a small loop), and the flatter side of every lens — a region of at most
-  // 8 × this many triangles bounded by curves with fewer than 3 sharp turns (a crease that
+  // 16 × this many triangles bounded by curves with fewer than 3 sharp turns (a crease that
   // forks and joins again). 0 keeps every sharp edge.
   int erode_dilate = 4;
 };
