@@ -147,7 +147,7 @@ void add_smoothing_options(CLI::App* cmd, quant::SmoothingOptions& smoothing) {
   cmd->add_option("--quality-rounds", smoothing.quality_rounds,
                   "Rounds of quality polishing after smoothing: corners moved towards right "
                   "angles, never lowering a vertex's worst quad or leaving the surface (0: none)")
-      ->default_val(5)
+      ->default_val(30)
       ->check(whole_number_from(0, 1000));
 }
 

@@ -419,7 +419,7 @@ void bind_mesh(py::module_& m) {
   m.def("remesh", &remesh, py::arg("layout"), py::kw_only(), py::arg("scale") = 1.0,
         py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
         py::arg("align") = true, py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
-        py::arg("quality_rounds") = 5, py::arg("threads") = 1, py::arg("time_limit") = py::none(),
+        py::arg("quality_rounds") = 30, py::arg("threads") = 1, py::arg("time_limit") = py::none(),
         py::arg("sharp_angle") = 35.0,
         "Remeshes as `bimdf remesh` does: a QuadWild layout (a path to NAME.obj with NAME.patch "
         "beside it, or a tuple (V, F, patch, corners)) is quantized and tessellated; a bare "
@@ -434,7 +434,7 @@ void bind_mesh(py::module_& m) {
       py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0, py::arg("cost") = "quadratic",
       py::arg("coarse_lengths") = "uniform", py::arg("calibrate") = true,
       py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
-      py::arg("quality_rounds") = 5, py::arg("threads") = 1, py::arg("half_arc") = "auto",
+      py::arg("quality_rounds") = 30, py::arg("threads") = 1, py::arg("half_arc") = "auto",
       py::arg("reorder_weight") = 1.0, py::arg("keep_crossings") = false,
       "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
       "coarse=True the coarsest layout the separation constraints allow; half_arc: 'auto' — "

@@ -64,7 +64,7 @@ struct Tessellation {
 struct SmoothingOptions {
   int iterations = 30;
   double damping = 0.5;
-  int quality_rounds = 5;
+  int quality_rounds = 30;
 };
 
 // Tessellates `layout` with subside lengths `lengths` (one per subside, as quantize returns).
