@@ -27,7 +27,7 @@ std::string benchmark_remesh(const std::string& cli, const std::string& dir, int
      << shell("git -C " + fs::path(cli).parent_path().string() +
               " rev-parse --short HEAD 2>/dev/null || echo unknown")
      << "`; `bimdf remesh LAYOUT.obj -o OUT.obj` with default options (alignment on, 30 "
-        "smoothing rounds, 5 quality-polishing rounds). Singular: vertices of irregular valence "
+        "smoothing rounds, 30 quality-polishing rounds). Singular: vertices of irregular valence "
         "(inside ≠ 4, boundary ≠ 3). "
         "SJ: scaled Jacobian (inverted: < 0; degenerate: exactly 0). Hausdorff: to the input "
         "surface, % of its bounding-box diagonal. "
