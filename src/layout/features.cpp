@@ -230,22 +230,20 @@ std::vector<bool> drop_lens_branches(const SurfaceTopology& top, std::vector<boo
       if (loop.size() != next_from.size()) continue;  // several boundary loops
       // Its turns, in quarters as the surface's angles count them (the field is not known yet).
       std::vector<char> ends(loop.size(), 0);  // where the pieces to choose from begin
+      std::vector<char> turn(loop.size(), 0);
       int turns = 0, junctions = 0;
       bool cusp = false;
       for (size_t i = 0; i < loop.size(); ++i) {
         const int v = top.from(loop[i]);
         const double quarters = sector[v] / total[v] * (top.on_border(v) ? 2 : 4);
-        turns += quarters < 1.5;
+        turns += turn[i] = quarters < 1.5;
         cusp |= quarters < 0.5;
         junctions += ends[i] = degree[v] >= 3;
       }
       // Without a junction, a closed curve: a lens if it pinches (a round cap keeps its rim; its
       // field has a singularity inside whose traces cut it), and then cut at its turns.
       if (turns >= 3 || (junctions == 0 && !cusp)) continue;
-      for (size_t i = 0; junctions == 0 && i < loop.size(); ++i) {
-        const int v = top.from(loop[i]);
-        ends[i] = sector[v] / total[v] * (top.on_border(v) ? 2 : 4) < 1.5;
-      }
+      if (junctions == 0) ends = turn;
       const auto first = std::find(ends.begin(), ends.end(), 1) - ends.begin();
       if (first == static_cast<std::ptrdiff_t>(ends.size())) continue;
       std::rotate(ends.begin(), ends.begin() + first, ends.end());
