@@ -163,6 +163,7 @@ TessellationReport report_metrics(const QuadMeshMetrics& m) {
          {"edges", m.edges},
          {"euler_characteristic", m.euler_characteristic},
          {"boundary_edges", m.boundary_edges},
+         {"border_loops", m.border_loops},
          {"manifold", m.manifold()},
          {"non_manifold_edges", m.non_manifold_edges},
          {"non_manifold_vertices", m.non_manifold_vertices},
@@ -306,9 +307,35 @@ int run_remesh(const RemeshCommandOptions& o) {
                      " is a QuadWild layout (bimdf quantize reports on it)"};
   if (!o.standalone.info && o.mesh_out.empty())
     throw UsageError{"--output is required\nRun 'bimdf remesh --help' for the options."};
+  quant::QuantizeOptions quantize_options = effective_quantize_options(o.quantize);
+  quantize_options.model.min_border_loop = quant::kRemeshMinBorderLoop;
+  // Quantizes and tessellates a layout, and says what is wrong with the quad mesh's topology.
+  std::optional<quant::Quantization> q;
+  quant::Tessellation t;
+  QuadMeshMetrics metrics;
+  double read_s = 0, quantized_s = 0, metrics_s = 0;
+  const auto quad_mesh_of = [&](const quant::Layout& layout) {
+    read_s = seconds_since(start);
+    if (o.standalone.progress)
+      print_stage(read_s, "layout", std::to_string(layout.charts.size()) + " patches");
+    q = quant::quantize(layout, quantize_options);
+    quantized_s = seconds_since(start);
+    if (o.standalone.progress)
+      print_stage(quantized_s, "quantized", std::to_string(layout.subsides.size()) + " subsides");
+    t = quant::tessellate(layout, q->lengths(), o.smoothing);
+    if (o.standalone.progress)
+      print_stage(seconds_since(start), "tessellated",
+                  std::to_string(t.mesh.num_quads()) + " quads, smoothed");
+    const auto measuring = std::chrono::steady_clock::now();
+    metrics = measure_quad_mesh(t.mesh, &layout.mesh);
+    metrics_s = seconds_since(measuring);
+    return topology_difference(metrics, layout.mesh);
+  };
   StandaloneLayout made;
   if (bare) {
-    made = build_standalone_layout(o.quantize.layout, o.standalone, start);
+    // A layout whose quad mesh does not have the input's topology is traced another way.
+    made = build_standalone_layout(o.quantize.layout, o.standalone, start,
+                                   o.standalone.info ? layout::LayoutCheck{} : quad_mesh_of);
     if (o.standalone.info) {
       json j = made.json;
       j["time"] = made.time;
@@ -321,25 +348,17 @@ int run_remesh(const RemeshCommandOptions& o) {
   }
   const quant::Layout layout =
       bare ? std::move(made.layout) : quant::read_quadwild_layout(o.quantize.layout);
-  const double read_s = seconds_since(start);
-  if (o.standalone.progress)
-    print_stage(read_s, "layout", std::to_string(layout.charts.size()) + " patches");
-  quant::QuantizeOptions quantize_options = effective_quantize_options(o.quantize);
-  quantize_options.model.min_border_loop = quant::kRemeshMinBorderLoop;
-  const quant::Quantization q = quant::quantize(layout, quantize_options);
-  write_quantization_model(q, o.quantize);
-  const double quantized_s = seconds_since(start);
-  if (o.standalone.progress)
-    print_stage(quantized_s, "quantized", std::to_string(layout.subsides.size()) + " subsides");
-  const quant::Tessellation t = quant::tessellate(layout, q.lengths(), o.smoothing);
-  if (o.standalone.progress)
-    print_stage(seconds_since(start), "tessellated",
-                std::to_string(t.mesh.num_quads()) + " quads, smoothed");
+  if (!bare) {
+    const std::string wrong = quad_mesh_of(layout);
+    if (!wrong.empty())
+      throw std::runtime_error("the quad mesh of " + o.quantize.layout +
+                               " would not have the layout's topology (" + wrong +
+                               "); nothing written");
+  }
+  write_quantization_model(*q, o.quantize);
   write_mesh(t, o, {o.quantize.layout});
-  const QuantizationReport qr = report_quantization(layout, q, o.quantize, read_s, quantized_s);
+  const QuantizationReport qr = report_quantization(layout, *q, o.quantize, read_s, quantized_s);
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
-  const auto measuring = std::chrono::steady_clock::now();
-  const QuadMeshMetrics metrics = measure_quad_mesh(t.mesh, &layout.mesh);
   TessellationReport mr = report_metrics(metrics);
   json j = tr.j;
   if (!o.compare.empty()) j["compare"] = compare_with(metrics, o.compare, &layout.mesh, mr.text);
@@ -347,7 +366,7 @@ int run_remesh(const RemeshCommandOptions& o) {
   j["metrics"] = mr.j;
   j["time"]["read_s"] = read_s;
   j["time"]["quantize_s"] = quantized_s - read_s;
-  j["time"]["metrics_s"] = seconds_since(measuring);
+  j["time"]["metrics_s"] = metrics_s;
   j["time"]["total_s"] = seconds_since(start);
   if (bare) {
     for (const auto& [key, value] : made.json.items()) j[key] = value;

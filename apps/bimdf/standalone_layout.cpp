@@ -65,7 +65,8 @@ bool is_quadwild_layout(const std::string& path) {
 }
 
 StandaloneLayout build_standalone_layout(const std::string& mesh_path, const StandaloneOptions& o,
-                                         std::chrono::steady_clock::time_point start) {
+                                         std::chrono::steady_clock::time_point start,
+                                         const layout::LayoutCheck& check) {
   StandaloneLayout out;
   const PolygonMesh input = read_polygon_mesh(mesh_path);
   const layout::Surface surface = layout::prepare_surface(input, mesh_path);
@@ -122,11 +123,12 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
 
   layout::GeneratedLayout g;
   try {
-    g = layout::generate_layout(surface.mesh, features, o.layout,
-                                [&](const layout::LayoutProgress& p) {
-                                  if (o.progress)
-                                    print_stage(read_s + p.elapsed_s, p.stage, p.detail);
-                                });
+    g = layout::generate_layout(
+        surface.mesh, features, o.layout,
+        [&](const layout::LayoutProgress& p) {
+          if (o.progress) print_stage(read_s + p.elapsed_s, p.stage, p.detail);
+        },
+        check);
   } catch (const std::runtime_error& e) {
     if (!o.info) throw;
     s << "layout        not possible: " << e.what() << "\n";

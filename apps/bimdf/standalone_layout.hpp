@@ -36,9 +36,11 @@ struct StandaloneLayout {
 };
 
 // Reads `mesh_path`, and unless options.info builds its layout (writing --layout-out's files,
-// never over `mesh_path`). Throws InputError for bad input.
+// never over `mesh_path`), tracing another way where `check` rejects it
+// (layout::generate_layout). Throws InputError for bad input.
 StandaloneLayout build_standalone_layout(const std::string& mesh_path,
                                          const StandaloneOptions& options,
-                                         std::chrono::steady_clock::time_point start);
+                                         std::chrono::steady_clock::time_point start,
+                                         const layout::LayoutCheck& check = {});
 
 }  // namespace bimdf::cli

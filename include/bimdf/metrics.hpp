@@ -17,6 +17,7 @@
 #pragma once
 
 #include <map>
+#include <string>
 #include <vector>
 
 #include "bimdf/mesh.hpp"
@@ -27,6 +28,7 @@ struct QuadMeshMetrics {
   int faces = 0, vertices = 0, edges = 0;
   int euler_characteristic = 0;  // V − E + F
   int boundary_edges = 0;
+  int border_loops = 0;           // connected pieces of the boundary edges
   int non_manifold_edges = 0;     // edges with more than two quads, or two with equal direction
   int non_manifold_vertices = 0;  // vertices whose quads form more than one fan
   bool manifold() const { return non_manifold_edges == 0 && non_manifold_vertices == 0; }
@@ -52,5 +54,12 @@ struct QuadMeshMetrics {
 // (sampled at vertices, edge midpoints and face centres) to the reference triangles, and the
 // faces that face away from the reference.
 QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* reference = nullptr);
+
+// What keeps a quad mesh measured as `quads` from having the topology of the triangle mesh
+// `surface` it remeshes, in words ("" when nothing does): not manifold, another Euler
+// characteristic, another number of border loops. A remesher checks this before it hands a
+// mesh out: a quantization may glue two patches back to back (a "pillow" of two quads on the
+// same four vertices) where the layout did not foresee it.
+std::string topology_difference(const QuadMeshMetrics& quads, const TriangleMesh& surface);
 
 }  // namespace bimdf

@@ -67,6 +67,7 @@ py::dict metrics_to_python(const QuadMeshMetrics& m) {
   d["edges"] = m.edges;
   d["euler_characteristic"] = m.euler_characteristic;
   d["boundary_edges"] = m.boundary_edges;
+  d["border_loops"] = m.border_loops;
   d["manifold"] = m.manifold();
   d["non_manifold_edges"] = m.non_manifold_edges;
   d["non_manifold_vertices"] = m.non_manifold_vertices;
@@ -126,7 +127,8 @@ struct RemeshInput {
   std::optional<py::dict> made;
 };
 
-RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle) {
+RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
+                                     const layout::LayoutCheck& check) {
   if (!(sharp_angle >= 0 && sharp_angle <= 180))
     throw py::value_error("sharp_angle must be in [0, 180]");
   PolygonMesh bare;
@@ -157,7 +159,7 @@ RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle) {
     const layout::Surface surface = layout::prepare_surface(bare, source);
     const layout::Features features = layout::detect_features(surface.mesh, feature_options);
     sharp_edges = static_cast<int>(features.sharp_edges.size());
-    g = layout::generate_layout(surface.mesh, features, {});
+    g = layout::generate_layout(surface.mesh, features, {}, {}, check);
   }
   int singular = 0;
   for (const auto& x : g->indices.singularities) singular += !x.on_border;
@@ -247,16 +249,27 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
   options.model.min_border_loop = quant::kRemeshMinBorderLoop;
   const quant::SmoothingOptions smoothing =
       smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
-  RemeshInput input = remesh_input_from_python(layout_arg, sharp_angle);
-  const quant::Layout& layout = input.layout;
+  // A bare mesh's layout whose quad mesh lacks the input's topology is traced another way.
   std::optional<quant::Quantization> q;
   quant::Tessellation t;
   QuadMeshMetrics metrics;
-  {
-    py::gil_scoped_release release;
+  const auto quad_mesh_of = [&](const quant::Layout& layout) {
     q = quant::quantize(layout, options);
     t = quant::tessellate(layout, q->lengths(), smoothing);
     metrics = measure_quad_mesh(t.mesh, &layout.mesh);
+    return topology_difference(metrics, layout.mesh);
+  };
+  RemeshInput input = remesh_input_from_python(layout_arg, sharp_angle, quad_mesh_of);
+  const quant::Layout& layout = input.layout;
+  if (!input.made) {
+    std::string wrong;
+    {
+      py::gil_scoped_release release;
+      wrong = quad_mesh_of(layout);
+    }
+    if (!wrong.empty())
+      throw std::runtime_error("the quad mesh would not have the layout's topology (" + wrong +
+                               ")");
   }
   py::dict report;
   report["quads"] = t.mesh.num_quads();

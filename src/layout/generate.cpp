@@ -249,7 +249,9 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
       graph = trace_motorcycle_graph(top, frames, ways, out.indices.quarter_index, curve, trace);
       if (ban_round == options.max_ban_rounds) break;
       size_t before = trace.banned.size();
-      ban_shallow_ends(graph.traces, shallow_deg * M_PI / 180, trace.seeds, trace.banned);
+      ban_shallow_ends(graph.traces, shallow_deg * M_PI / 180,
+                       std::max(shallow_deg, options.curve_shallow_angle_deg) * M_PI / 180,
+                       trace.seeds, trace.banned);
       ban_short_to_curve(graph.traces, curve_vertex, trace.seeds, short_length, trace.banned);
       ban_seed_loops(graph.traces, curve_vertex, trace.seeds, short_length, trace.banned);
       if (trace.banned.size() == before) break;
@@ -381,7 +383,8 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
 
 GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
                                 const LayoutOptions& options,
-                                const std::function<void(const LayoutProgress&)>& progress) {
+                                const std::function<void(const LayoutProgress&)>& progress,
+                                const LayoutCheck& check) {
   // The two ways of tracing fail in different places (camel: a ring around two adjacent
   // singularities that no seed's trace cuts open): where the first fails, the parametrization
   // is traced despite its folds, then the field's streamlines.
@@ -398,15 +401,20 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
     if (progress) progress({earlier_s + p.elapsed_s, p.stage, p.detail});
   };
   for (size_t i = 0;; ++i) {
+    std::string wrong;
     try {
       GeneratedLayout out = generate_layout_once(mesh, features, attempts[i], report);
       out.attempts = static_cast<int>(i) + 1;
-      return out;
+      if (check) wrong = check(out.layout);
+      if (wrong.empty()) return out;
+      if (i + 1 == attempts.size())
+        throw std::runtime_error("no way of tracing gave a layout that passes: " + wrong);
     } catch (const NotCharts& e) {
       if (i + 1 == attempts.size()) throw;
-      earlier_s = since(start);
-      report({0, "retry", std::string(e.what()) + "; tracing another way"});
+      wrong = e.what();
     }
+    earlier_s = since(start);
+    report({0, "retry", wrong + "; tracing another way"});
   }
 }
 

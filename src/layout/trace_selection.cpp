@@ -42,12 +42,15 @@ int drop_dangling(std::vector<Trace>& traces) {
   return n;
 }
 
-void ban_shallow_ends(const std::vector<Trace>& traces, double shallow_angle,
+void ban_shallow_ends(const std::vector<Trace>& traces, double on_trace, double on_curve,
                       const std::vector<int>& seeds, std::vector<std::array<int, 2>>& banned) {
-  for (const Trace& t : traces)
-    if ((t.end == Trace::End::Trace || t.end == Trace::End::Curve) && t.end_angle < shallow_angle &&
-        !is_seed(seeds, t.start_vertex))
+  for (const Trace& t : traces) {
+    const double shallow = t.end == Trace::End::Trace   ? on_trace
+                           : t.end == Trace::End::Curve ? on_curve
+                                                        : 0;
+    if (t.end_angle < shallow && !is_seed(seeds, t.start_vertex))
       banned.push_back({t.start_vertex, t.start_way});
+  }
 }
 
 void ban_short_to_curve(const std::vector<Trace>& traces, const std::vector<bool>& curve_vertex,

@@ -16,10 +16,11 @@ namespace bimdf::layout {
 // becomes of the trace that passed there first. Returns how many were removed.
 int drop_dangling(std::vector<Trace>& traces);
 
-// Bans (appends to `banned`) every trace that ends on a line at less than `shallow_angle`
-// radians (Trace::end_angle): it is that line, drifted. Traces from `seeds` are kept: they are
-// there to cut a patch open, and around a tube the two halves of a loop meet head on.
-void ban_shallow_ends(const std::vector<Trace>& traces, double shallow_angle,
+// Bans (appends to `banned`) every trace that ends on another trace at less than `on_trace`
+// radians, or on a curve at less than `on_curve` (Trace::end_angle): it is that line, drifted,
+// and would leave a sliver. Traces from `seeds` are kept: they are there to cut a patch open,
+// and around a tube the two halves of a loop meet head on.
+void ban_shallow_ends(const std::vector<Trace>& traces, double on_trace, double on_curve,
                       const std::vector<int>& seeds, std::vector<std::array<int, 2>>& banned);
 
 // A start off the curves (`curve_vertex` false) whose consecutive separatrices (start ways

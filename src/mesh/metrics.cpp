@@ -29,6 +29,26 @@ using detail::Vec3;
 using Edge = std::pair<int, int>;
 Edge undirected(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 
+// Connected pieces of a set of edges on vertices 0..n−1 (union–find); on a manifold mesh the
+// boundary edges' pieces are its border loops.
+int edge_pieces(int n, const std::vector<Edge>& edges) {
+  std::vector<int> parent(n);
+  for (int v = 0; v < n; ++v) parent[v] = v;
+  const auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  int pieces = 0;
+  std::vector<char> touched(n, 0);
+  for (const auto& [a, b] : edges) {
+    pieces += !touched[a] + !touched[b];
+    touched[a] = touched[b] = 1;
+    const int ra = root(a), rb = root(b);
+    if (ra != rb) parent[ra] = rb, --pieces;
+  }
+  return pieces;
+}
+
 }  // namespace
 
 QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* reference) {
@@ -45,12 +65,14 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
   m.edges = static_cast<int>(edges.size());
   std::vector<std::vector<int>> neighbours(nv);
   std::vector<char> on_boundary(nv, 0), used(nv, 0);
+  std::vector<Edge> boundary;
   for (const auto& [e, quads] : edges) {
     neighbours[e.first].push_back(e.second);
     neighbours[e.second].push_back(e.first);
     used[e.first] = used[e.second] = 1;
     if (quads.size() == 1) {
       ++m.boundary_edges;
+      boundary.push_back(e);
       on_boundary[e.first] = on_boundary[e.second] = 1;
     } else if (quads.size() > 2 || quads[0].second == quads[1].second) {
       ++m.non_manifold_edges;
@@ -60,6 +82,7 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
   for (char u : used) used_vertices += u;
   m.vertices = used_vertices;
   m.euler_characteristic = used_vertices - m.edges + nf;
+  m.border_loops = edge_pieces(nv, boundary);
 
   // Fans: quads around a vertex connected through the edges at that vertex.
   std::vector<std::vector<int>> vertex_quads(nv);
@@ -187,6 +210,35 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
     m.hausdorff_relative = diagonal > 0 ? m.hausdorff / diagonal : 0;
   }
   return m;
+}
+
+std::string topology_difference(const QuadMeshMetrics& quads, const TriangleMesh& surface) {
+  std::map<Edge, int> faces_at;
+  std::vector<char> used(surface.num_vertices(), 0);
+  for (const auto& t : surface.faces)
+    for (int k = 0; k < 3; ++k) {
+      ++faces_at[undirected(t[k], t[(k + 1) % 3])];
+      used[t[k]] = 1;
+    }
+  std::vector<Edge> boundary;
+  for (const auto& [e, n] : faces_at)
+    if (n == 1) boundary.push_back(e);
+  int vertices = 0;
+  for (char u : used) vertices += u;
+  const int euler = vertices - static_cast<int>(faces_at.size()) + surface.num_faces();
+  const int loops = edge_pieces(surface.num_vertices(), boundary);
+  std::string out;
+  const auto add = [&](const std::string& what) { out += (out.empty() ? "" : "; ") + what; };
+  if (!quads.manifold())
+    add("not manifold (" + std::to_string(quads.non_manifold_edges) + " edges, " +
+        std::to_string(quads.non_manifold_vertices) + " vertices)");
+  if (quads.euler_characteristic != euler)
+    add("Euler characteristic " + std::to_string(quads.euler_characteristic) + ", the surface's " +
+        std::to_string(euler));
+  if (quads.border_loops != loops)
+    add(std::to_string(quads.border_loops) + " border loops, the surface has " +
+        std::to_string(loops));
+  return out;
 }
 
 }  // namespace bimdf

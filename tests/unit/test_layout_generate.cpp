@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "bimdf/layout/generate.hpp"
 #include "bimdf/layout/surface.hpp"
@@ -74,6 +76,39 @@ TEST(LayoutGenerate, SquareIsOnePatchAndSphereIsCutAlongItsSeparatrices) {
   EXPECT_GE(g.traces, 12);
   EXPECT_LE(g.traces, 24);
   EXPECT_GE(g.layout.charts.size(), 6u);
+}
+
+// A caller that rejects a layout (remesh: its quad mesh is not manifold) gets it traced the
+// next way — along the parametrization despite folds, then the field's streamlines — and an
+// error with its own reason when it rejects the last.
+TEST(LayoutGenerate, ALayoutTheCallerRejectsIsTracedAnotherWay) {
+  const TriangleMesh sphere = test::icosphere(3);
+  const layout::Features f = layout::detect_features(sphere, {});
+  int checked = 0;
+  std::vector<std::string> retries;
+  const auto progress = [&](const layout::LayoutProgress& p) {
+    if (p.stage == "retry") retries.push_back(p.detail);
+  };
+  const layout::GeneratedLayout g = layout::generate_layout(
+      sphere, f, {}, progress,
+      [&](const quant::Layout&) { return ++checked == 1 ? "a pillow" : ""; });
+  expect_valid(sphere, g);
+  EXPECT_EQ(checked, 2);
+  EXPECT_EQ(g.attempts, 2);
+  EXPECT_EQ(retries, std::vector<std::string>{"a pillow; tracing another way"});
+
+  checked = 0;
+  retries.clear();
+  try {
+    layout::generate_layout(sphere, f, {}, progress, [&](const quant::Layout&) {
+      return "pillow " + std::to_string(++checked);
+    });
+    ADD_FAILURE() << "every layout was rejected, yet one was returned";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "no way of tracing gave a layout that passes: pillow 3");
+  }
+  EXPECT_EQ(checked, 3);
+  EXPECT_EQ(retries.size(), 2u);
 }
 
 TEST(LayoutGenerate, CylinderAndTorusAreCutOpenBySeeds) {

@@ -409,6 +409,40 @@ TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
   EXPECT_EQ(measure_quad_mesh(bad).non_manifold_edges, 4);
 }
 
+// A remesh's output is checked against its input surface before it is written: the grid over
+// the square, the cube's six quads over a triangulated cube; what differs is named.
+TEST(Metrics, TopologyDifferenceNamesWhatTheQuadMeshDoesNotKeep) {
+  const TriangleMesh square{{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}};
+  EXPECT_EQ(measure_quad_mesh(grid()).border_loops, 1);
+  EXPECT_EQ(topology_difference(measure_quad_mesh(grid()), square), "");
+
+  QuadMesh cube;
+  for (int i = 0; i < 8; ++i)
+    cube.vertices.push_back({double(i & 1), double(i >> 1 & 1), double(i >> 2)});
+  cube.quads = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  TriangleMesh surface{cube.vertices, {}};
+  for (const auto& q : cube.quads) {
+    surface.faces.push_back({q[0], q[1], q[2]});
+    surface.faces.push_back({q[0], q[2], q[3]});
+  }
+  EXPECT_EQ(measure_quad_mesh(cube).border_loops, 0);
+  EXPECT_EQ(topology_difference(measure_quad_mesh(cube), surface), "");
+
+  QuadMesh open = cube;
+  open.quads.pop_back();
+  EXPECT_EQ(topology_difference(measure_quad_mesh(open), surface),
+            "Euler characteristic 1, the surface's 2; 1 border loops, the surface has 0");
+  EXPECT_EQ(topology_difference(measure_quad_mesh(cube), square),
+            "Euler characteristic 2, the surface's 1; 0 border loops, the surface has 1");
+
+  // A pillow: a second quad on the four vertices of a face, the other way round, hangs off
+  // the surface (its edges have three quads each).
+  QuadMesh pillow = cube;
+  pillow.quads.push_back({1, 3, 2, 0});
+  EXPECT_EQ(topology_difference(measure_quad_mesh(pillow), surface),
+            "not manifold (4 edges, 0 vertices); Euler characteristic 3, the surface's 2");
+}
+
 TEST(Render, DrawsTheMeshIntoAValidPng) {
   RenderOptions o;
   o.width = 64, o.height = 48, o.view = {0, 0, -1};
