@@ -6,6 +6,7 @@
 #include <set>
 #include <utility>
 
+#include "core/union_find.hpp"
 #include "mesh/closest_point.hpp"
 #include "mesh/quad_quality.hpp"
 #include "mesh/vec3.hpp"
@@ -29,22 +30,16 @@ using detail::Vec3;
 using Edge = std::pair<int, int>;
 Edge undirected(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 
-// Connected pieces of a set of edges on vertices 0..n−1 (union–find); on a manifold mesh the
-// boundary edges' pieces are its border loops.
+// Connected pieces of a set of edges on vertices 0..n−1; on a manifold mesh the boundary
+// edges' pieces are its border loops.
 int edge_pieces(int n, const std::vector<Edge>& edges) {
-  std::vector<int> parent(n);
-  for (int v = 0; v < n; ++v) parent[v] = v;
-  const auto root = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  detail::SmallestRootUnionFind classes(n);
   int pieces = 0;
   std::vector<char> touched(n, 0);
   for (const auto& [a, b] : edges) {
     pieces += !touched[a] + !touched[b];
     touched[a] = touched[b] = 1;
-    const int ra = root(a), rb = root(b);
-    if (ra != rb) parent[ra] = rb, --pieces;
+    if (classes.find(a) != classes.find(b)) classes.unite(a, b), --pieces;
   }
   return pieces;
 }
