@@ -48,7 +48,7 @@ void ban_shallow_ends(const std::vector<Trace>& traces, double on_trace, double 
     const double shallow = t.end == Trace::End::Trace   ? on_trace
                            : t.end == Trace::End::Curve ? on_curve
                                                         : 0;
-    if (t.end_angle < shallow && !is_seed(seeds, t.start_vertex))
+    if (t.end_angle < shallow && (t.end == Trace::End::Curve || !is_seed(seeds, t.start_vertex)))
       banned.push_back({t.start_vertex, t.start_way});
   }
 }

@@ -140,19 +140,20 @@ TEST(LayoutTraceSelection, OfEachRunOfShortWaysToACurveOnlyTheShortestStays) {
 }
 
 // A trace ending on a curve at a shallow angle ran alongside it (curves are not iso-lines):
-// banned below its own bound; ending on a trace has another bound; seeds' traces stay.
+// banned below its own bound, a seed's too; ending on a trace has another bound, and there a
+// seed's trace stays.
 TEST(LayoutTraceSelection, ShallowEndsOnCurvesAndOnTracesHaveTheirOwnBounds) {
   std::vector<Trace> traces = {
       ending(0, 0, 4, Trace::End::Curve, 1), ending(0, 1, 4, Trace::End::Curve, 1),
       ending(0, 2, 4, Trace::End::Trace, 1), ending(0, 3, 4, Trace::End::Singularity, 1),
-      ending(1, 0, 4, Trace::End::Curve, 1)};
+      ending(1, 0, 4, Trace::End::Curve, 1), ending(1, 1, 4, Trace::End::Trace, 1)};
   for (Trace& t : traces) t.end_angle = 0.3;
   traces[1].end_angle = 0.9;  // steeper than the curve bound
   std::vector<std::array<int, 2>> banned;
   layout::ban_shallow_ends(traces, 0, M_PI / 4, {1}, banned);  // vertex 1 is a seed
-  EXPECT_EQ(banned, (std::vector<std::array<int, 2>>{{0, 0}}));
+  EXPECT_EQ(banned, (std::vector<std::array<int, 2>>{{0, 0}, {1, 0}}));
   banned.clear();
-  layout::ban_shallow_ends(traces, 0.5, 0, {}, banned);
+  layout::ban_shallow_ends(traces, 0.5, 0, {1}, banned);
   EXPECT_EQ(banned, (std::vector<std::array<int, 2>>{{0, 2}}));
 }
 
