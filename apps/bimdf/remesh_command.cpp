@@ -10,6 +10,7 @@
 #include "bimdf/error.hpp"
 #include "bimdf/io.hpp"
 #include "bimdf/metrics.hpp"
+#include "bimdf/quant/remesh_layout.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "number_checks.hpp"
 
@@ -310,26 +311,19 @@ int run_remesh(const RemeshCommandOptions& o) {
   quant::QuantizeOptions quantize_options = effective_quantize_options(o.quantize);
   quantize_options.model.min_border_loop = quant::kRemeshMinBorderLoop;
   // Quantizes and tessellates a layout, and says what is wrong with the quad mesh's topology.
-  std::optional<quant::Quantization> q;
-  quant::Tessellation t;
-  QuadMeshMetrics metrics;
-  double read_s = 0, quantized_s = 0, metrics_s = 0;
+  std::optional<quant::RemeshedLayout> r;
+  double read_s = 0;
   const auto quad_mesh_of = [&](const quant::Layout& layout) {
     read_s = seconds_since(start);
     if (o.standalone.progress)
       print_stage(read_s, "layout", std::to_string(layout.charts.size()) + " patches");
-    q = quant::quantize(layout, quantize_options);
-    quantized_s = seconds_since(start);
+    quant::RemeshProgress progress;
     if (o.standalone.progress)
-      print_stage(quantized_s, "quantized", std::to_string(layout.subsides.size()) + " subsides");
-    t = quant::tessellate(layout, q->lengths(), o.smoothing);
-    if (o.standalone.progress)
-      print_stage(seconds_since(start), "tessellated",
-                  std::to_string(t.mesh.num_quads()) + " quads, smoothed");
-    const auto measuring = std::chrono::steady_clock::now();
-    metrics = measure_quad_mesh(t.mesh, &layout.mesh);
-    metrics_s = seconds_since(measuring);
-    return topology_difference(metrics, layout.mesh);
+      progress = [&](const std::string& stage, const std::string& detail) {
+        print_stage(seconds_since(start), stage, detail);
+      };
+    r = quant::remesh_layout(layout, quantize_options, o.smoothing, progress);
+    return r->topology_difference;
   };
   StandaloneLayout made;
   if (bare) {
@@ -355,18 +349,20 @@ int run_remesh(const RemeshCommandOptions& o) {
                                " would not have the layout's topology (" + wrong +
                                "); nothing written");
   }
-  write_quantization_model(*q, o.quantize);
+  const quant::Tessellation& t = r->tessellation;
+  write_quantization_model(r->quantization, o.quantize);
   write_mesh(t, o, {o.quantize.layout});
-  const QuantizationReport qr = report_quantization(layout, *q, o.quantize, read_s, quantized_s);
+  const QuantizationReport qr =
+      report_quantization(layout, r->quantization, o.quantize, read_s, read_s + r->quantize_s);
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
-  TessellationReport mr = report_metrics(metrics);
+  TessellationReport mr = report_metrics(r->metrics);
   json j = tr.j;
-  if (!o.compare.empty()) j["compare"] = compare_with(metrics, o.compare, &layout.mesh, mr.text);
+  if (!o.compare.empty()) j["compare"] = compare_with(r->metrics, o.compare, &layout.mesh, mr.text);
   j["quantization"] = qr.json;
   j["metrics"] = mr.j;
   j["time"]["read_s"] = read_s;
-  j["time"]["quantize_s"] = quantized_s - read_s;
-  j["time"]["metrics_s"] = metrics_s;
+  j["time"]["quantize_s"] = r->quantize_s;
+  j["time"]["metrics_s"] = r->metrics_s;
   j["time"]["total_s"] = seconds_since(start);
   if (bare) {
     for (const auto& [key, value] : made.json.items()) j[key] = value;

@@ -17,6 +17,7 @@
 #include "bimdf/layout/surface.hpp"
 #include "bimdf/metrics.hpp"
 #include "bimdf/quant/quantize.hpp"
+#include "bimdf/quant/remesh_layout.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "bimdf/tmesh/requantize.hpp"
 #include "bindings.hpp"
@@ -250,14 +251,10 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
   const quant::SmoothingOptions smoothing =
       smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
   // A bare mesh's layout whose quad mesh lacks the input's topology is traced another way.
-  std::optional<quant::Quantization> q;
-  quant::Tessellation t;
-  QuadMeshMetrics metrics;
+  std::optional<quant::RemeshedLayout> r;
   const auto quad_mesh_of = [&](const quant::Layout& layout) {
-    q = quant::quantize(layout, options);
-    t = quant::tessellate(layout, q->lengths(), smoothing);
-    metrics = measure_quad_mesh(t.mesh, &layout.mesh);
-    return topology_difference(metrics, layout.mesh);
+    r = quant::remesh_layout(layout, options, smoothing);
+    return r->topology_difference;
   };
   RemeshInput input = remesh_input_from_python(layout_arg, sharp_angle, quad_mesh_of);
   const quant::Layout& layout = input.layout;
@@ -271,14 +268,16 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
       throw std::runtime_error("the quad mesh would not have the layout's topology (" + wrong +
                                ")");
   }
+  const quant::Tessellation& t = r->tessellation;
   py::dict report;
   report["quads"] = t.mesh.num_quads();
-  report["quantization"] = quantization_to_python(*q);
-  report["metrics"] = metrics_to_python(metrics);
+  report["quantization"] = quantization_to_python(r->quantization);
+  report["metrics"] = metrics_to_python(r->metrics);
   report["warnings"] = layout.warnings;
   if (input.made) report["layout"] = *input.made;
   report["time"] =
-      py::dict(py::arg("patterns_s") = t.time_patterns_s, py::arg("mapping_s") = t.time_mapping_s,
+      py::dict(py::arg("quantize_s") = r->quantize_s, py::arg("metrics_s") = r->metrics_s,
+               py::arg("patterns_s") = t.time_patterns_s, py::arg("mapping_s") = t.time_mapping_s,
                py::arg("smoothing_s") = t.time_smoothing_s, py::arg("polish_s") = t.time_polish_s,
                py::arg("total_s") = seconds_since(start));
   py::tuple vf = mesh_to_python(t.mesh);
