@@ -90,6 +90,7 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
            {"cut", kinds[quant::PatternKind::Cut]},
            {"fan", kinds[quant::PatternKind::Fan]}}},
          {"pattern_singularities", singular},
+         {"removed_doublets", t.removed_doublets},
          {"charts", per_chart},
          {"time",
           {{"patterns_s", t.time_patterns_s},
@@ -102,7 +103,10 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
   s << "patterns      " << kinds[quant::PatternKind::Regular] << " regular, "
     << kinds[quant::PatternKind::Cut] << " cut into regular parts, "
     << kinds[quant::PatternKind::Fan] << " fans (of " << charts << " charts); " << singular
-    << " interior singularities\n";
+    << " interior singularities";
+  if (t.removed_doublets > 0)
+    s << "; " << t.removed_doublets << " vertices of valence 2 removed (quads merged)";
+  s << "\n";
   s << "tessellation  patterns " << ms(t.time_patterns_s) << ", mapping " << ms(t.time_mapping_s)
     << ", smoothing " << ms(t.time_smoothing_s) << ", polish " << ms(t.time_polish_s) << "\n";
   if (verbose)

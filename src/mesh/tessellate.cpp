@@ -10,6 +10,7 @@
 #include "core/stopwatch.hpp"
 #include "mesh/chart_parametrization.hpp"
 #include "mesh/chart_placement.hpp"
+#include "mesh/doublets.hpp"
 #include "mesh/smoothing.hpp"
 
 namespace bimdf::quant {
@@ -150,6 +151,9 @@ Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& length
     start = std::chrono::steady_clock::now();
     smoother.polish(smoothing);
     result.time_polish_s = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    result.removed_doublets = bimdf::detail::remove_doublets(layout, result);
+    result.time_smoothing_s += seconds_since(start);
   }
   return result;
 }

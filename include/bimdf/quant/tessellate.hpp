@@ -40,8 +40,11 @@ struct Tessellation {
   std::vector<ChartTiling> charts;   // by chart id; empty charts get 0 quads
   double time_patterns_s = 0;        // building the patterns
   double time_mapping_s = 0;         // flattening charts and placing vertices
-  double time_smoothing_s = 0;       // relaxation, untangling and tangled charts' retries
+  double time_smoothing_s = 0;       // relaxation, untangling, tangled charts' retries, doublets
   double time_polish_s = 0;          // quality polishing (SmoothingOptions::quality_rounds)
+  // Interior vertices of valence 2 removed after polishing, their two quads merged into one
+  // (src/mesh/doublets.hpp); then the charts' quad counts no longer add up to the patterns'.
+  int removed_doublets = 0;
 };
 
 // Smoothing after stitching (note §4.2): `iterations` rounds in which every free vertex moves
@@ -60,7 +63,9 @@ struct Tessellation {
 // moves to where the corners of its quads are closest to right angles, never lowering its
 // worst quad, turning a quad over or moving the mesh farther from the input surface; then as
 // many rounds again over the corners of the worst tenth of the quads. It raises the mean and
-// 5th-percentile scaled Jacobian; 0: none.
+// 5th-percentile scaled Jacobian; 0: none. Last, where smoothing or polishing ran, each
+// interior vertex of valence 2 off the features (a "doublet", two quads with a corner of about
+// 180° each) is removed and its two quads merged into one, where that raises the worse of them.
 struct SmoothingOptions {
   int iterations = 30;
   double damping = 0.5;
