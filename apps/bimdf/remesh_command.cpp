@@ -91,6 +91,7 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
            {"fan", kinds[quant::PatternKind::Fan]}}},
          {"pattern_singularities", singular},
          {"removed_doublets", t.removed_doublets},
+         {"collapsed_inverted", t.collapsed_inverted},
          {"charts", per_chart},
          {"time",
           {{"patterns_s", t.time_patterns_s},
@@ -106,6 +107,8 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
     << " interior singularities";
   if (t.removed_doublets > 0)
     s << "; " << t.removed_doublets << " vertices of valence 2 removed (quads merged)";
+  if (t.collapsed_inverted > 0)
+    s << "; " << t.collapsed_inverted << " inverted quads collapsed (opposite corners merged)";
   s << "\n";
   s << "tessellation  patterns " << ms(t.time_patterns_s) << ", mapping " << ms(t.time_mapping_s)
     << ", smoothing " << ms(t.time_smoothing_s) << ", polish " << ms(t.time_polish_s) << "\n";

@@ -40,11 +40,14 @@ struct Tessellation {
   std::vector<ChartTiling> charts;   // by chart id; empty charts get 0 quads
   double time_patterns_s = 0;        // building the patterns
   double time_mapping_s = 0;         // flattening charts and placing vertices
-  double time_smoothing_s = 0;       // relaxation, untangling, tangled charts' retries, doublets
+  double time_smoothing_s = 0;       // relaxation, untangling, tangled retries, cleanups
   double time_polish_s = 0;          // quality polishing (SmoothingOptions::quality_rounds)
   // Interior vertices of valence 2 removed after polishing, their two quads merged into one
   // (src/mesh/doublets.hpp); then the charts' quad counts no longer add up to the patterns'.
   int removed_doublets = 0;
+  // Inverted quads left after polishing that were removed by merging two opposite corners
+  // (src/mesh/diagonal_collapse.hpp); the vertices around were polished again.
+  int collapsed_inverted = 0;
 };
 
 // Smoothing after stitching (note §4.2): `iterations` rounds in which every free vertex moves
