@@ -317,20 +317,22 @@ int run_remesh(const RemeshCommandOptions& o) {
     throw UsageError{"--output is required\nRun 'bimdf remesh --help' for the options."};
   quant::QuantizeOptions quantize_options = effective_quantize_options(o.quantize);
   quantize_options.model.min_border_loop = quant::kRemeshMinBorderLoop;
-  // Quantizes and tessellates a layout, and says what is wrong with the quad mesh's topology.
-  std::optional<quant::RemeshedLayout> r;
-  double read_s = 0;
+  // Quantizes and tessellates a layout, says what is wrong with the quad mesh's topology and
+  // how bad the mesh is; each result is kept, for the layout generate_layout chooses.
+  std::vector<quant::RemeshedLayout> results;
+  std::vector<double> ready_s;  // per result: when its layout was ready
   const auto quad_mesh_of = [&](const quant::Layout& layout) {
-    read_s = seconds_since(start);
+    ready_s.push_back(seconds_since(start));
     if (o.standalone.progress)
-      print_stage(read_s, "layout", std::to_string(layout.charts.size()) + " patches");
+      print_stage(ready_s.back(), "layout", std::to_string(layout.charts.size()) + " patches");
     quant::RemeshProgress progress;
     if (o.standalone.progress)
       progress = [&](const std::string& stage, const std::string& detail) {
         print_stage(seconds_since(start), stage, detail);
       };
-    r = quant::remesh_layout(layout, quantize_options, o.smoothing, progress);
-    return r->topology_difference;
+    results.push_back(quant::remesh_layout(layout, quantize_options, o.smoothing, progress));
+    return layout::LayoutVerdict{results.back().topology_difference,
+                                 quant::layout_badness(results.back())};
   };
   StandaloneLayout made;
   if (bare) {
@@ -350,12 +352,15 @@ int run_remesh(const RemeshCommandOptions& o) {
   const quant::Layout layout =
       bare ? std::move(made.layout) : quant::read_quadwild_layout(o.quantize.layout);
   if (!bare) {
-    const std::string wrong = quad_mesh_of(layout);
+    const std::string wrong = quad_mesh_of(layout).wrong;
     if (!wrong.empty())
       throw std::runtime_error("the quad mesh of " + o.quantize.layout +
                                " would not have the layout's topology (" + wrong +
                                "); nothing written");
   }
+  const size_t chosen = bare ? made.checked : results.size() - 1;
+  const quant::RemeshedLayout* r = &results.at(chosen);
+  const double read_s = ready_s.at(chosen);
   const quant::Tessellation& t = r->tessellation;
   write_quantization_model(r->quantization, o.quantize);
   write_mesh(t, o, {o.quantize.layout});

@@ -157,6 +157,8 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
   out.json["layout"] = {{"traced_along", g.traced_parametrization ? "parametrization" : "field"},
                         {"folded_faces", g.folded_faces},
                         {"attempts", g.attempts},
+                        {"pairing_radius", g.pairing_radius},
+                        {"candidates", g.candidates},
                         {"trace_starts", g.trace_starts},
                         {"traces", g.traces},
                         {"removed_traces", g.removed_traces},
@@ -170,7 +172,10 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
     << g.layout.mesh.num_faces() << " triangles, traced along the "
     << (g.traced_parametrization ? "parametrization" : "field's streamlines") << " ("
     << g.folded_faces << " folded faces"
-    << (g.attempts > 1 ? "; tracing attempt " + std::to_string(g.attempts) : std::string()) << ")\n";
+    << (g.attempts > 1 ? "; tracing attempt " + std::to_string(g.attempts) : std::string());
+  if (g.candidates > 1)
+    s << "; pairing radius " << g.pairing_radius << ", least bad of " << g.candidates;
+  s << ")\n";
   out.time["field_s"] = g.time_field_s;
   out.time["parametrization_s"] = g.time_parametrization_s;
   out.time["trace_s"] = g.time_trace_s;
@@ -190,6 +195,7 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
     write_output_file(beside(".c_feature"), files.c_feature, inputs);
   }
   out.layout = std::move(g.layout);
+  out.checked = g.checked;
   out.text = s.str();
   return out;
 }

@@ -33,11 +33,12 @@ struct StandaloneLayout {
   nlohmann::json json;  // "input" and "layout" sections of the report
   std::string text;     // their human summary
   nlohmann::json time;  // per stage, seconds
+  int checked = -1;     // which call of `check` rated the layout kept (GeneratedLayout::checked)
 };
 
 // Reads `mesh_path`, and unless options.info builds its layout (writing --layout-out's files,
-// never over `mesh_path`), tracing another way where `check` rejects it
-// (layout::generate_layout). Throws InputError for bad input.
+// never over `mesh_path`), tracing another way where `check` rejects it and keeping the least
+// bad of the layouts it takes (layout::generate_layout). Throws InputError for bad input.
 StandaloneLayout build_standalone_layout(const std::string& mesh_path,
                                          const StandaloneOptions& options,
                                          std::chrono::steady_clock::time_point start,

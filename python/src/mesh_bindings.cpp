@@ -126,6 +126,7 @@ quant::Layout layout_from_python(py::handle layout) {
 struct RemeshInput {
   quant::Layout layout;
   std::optional<py::dict> made;
+  int checked = -1;  // bare mesh: which call of the check rated the layout kept
 };
 
 RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
@@ -170,12 +171,14 @@ RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
   made["traced_along"] = g->traced_parametrization ? "parametrization" : "field";
   made["folded_faces"] = g->folded_faces;
   made["attempts"] = g->attempts;
+  made["pairing_radius"] = g->pairing_radius;
+  made["candidates"] = g->candidates;
   made["patches"] = g->layout.charts.size();
   made["time"] = py::dict(
       py::arg("field_s") = g->time_field_s, py::arg("parametrization_s") = g->time_parametrization_s,
       py::arg("trace_s") = g->time_trace_s, py::arg("cut_s") = g->time_cut_s,
       py::arg("patches_s") = g->time_patches_s);
-  return {std::move(g->layout), made};
+  return {std::move(g->layout), made, g->checked};
 }
 
 quant::QuantizeOptions quantize_options(double scale, std::optional<double> edge_length,
@@ -250,11 +253,13 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
   options.model.min_border_loop = quant::kRemeshMinBorderLoop;
   const quant::SmoothingOptions smoothing =
       smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
-  // A bare mesh's layout whose quad mesh lacks the input's topology is traced another way.
-  std::optional<quant::RemeshedLayout> r;
+  // A bare mesh's layout whose quad mesh lacks the input's topology is traced another way; of
+  // those taken the least bad is kept (layout::generate_layout).
+  std::vector<quant::RemeshedLayout> results;
   const auto quad_mesh_of = [&](const quant::Layout& layout) {
-    r = quant::remesh_layout(layout, options, smoothing);
-    return r->topology_difference;
+    results.push_back(quant::remesh_layout(layout, options, smoothing));
+    return layout::LayoutVerdict{results.back().topology_difference,
+                                 quant::layout_badness(results.back())};
   };
   RemeshInput input = remesh_input_from_python(layout_arg, sharp_angle, quad_mesh_of);
   const quant::Layout& layout = input.layout;
@@ -262,12 +267,13 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
     std::string wrong;
     {
       py::gil_scoped_release release;
-      wrong = quad_mesh_of(layout);
+      wrong = quad_mesh_of(layout).wrong;
     }
     if (!wrong.empty())
       throw std::runtime_error("the quad mesh would not have the layout's topology (" + wrong +
                                ")");
   }
+  const quant::RemeshedLayout* r = &results.at(input.checked >= 0 ? input.checked : 0);
   const quant::Tessellation& t = r->tessellation;
   py::dict report;
   report["quads"] = t.mesh.num_quads();

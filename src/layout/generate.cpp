@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "layout/face_frames.hpp"
 #include "layout/feature_flags.hpp"
@@ -178,13 +181,14 @@ struct NotCharts : std::runtime_error {
 
 // One attempt, tracing as `options` says.
 GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& features,
-                                     const LayoutOptions& options,
+                                     const LayoutOptions& options, double pairing_radius,
                                      const std::function<void(const LayoutProgress&)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   const auto report = [&](const char* stage, const std::string& detail) {
     if (progress) progress({since(start), stage, detail});
   };
   GeneratedLayout out;
+  out.pairing_radius = pairing_radius;
   const SurfaceTopology top(mesh);
   const FaceFrames frames(mesh);
   const std::vector<bool> curve = feature_edge_flags(top, features);
@@ -233,6 +237,7 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   TraceOptions trace;
   trace.snap = snap;
   trace.max_length = options.max_trace_length;
+  trace.approach_radius = pairing_radius;
   CutMesh cut;
   Patches patches;
   std::vector<std::array<int, 2>> sharp_pieces;
@@ -379,12 +384,12 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   return out;
 }
 
-}  // namespace
-
-GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
-                                const LayoutOptions& options,
-                                const std::function<void(const LayoutProgress&)>& progress,
-                                const LayoutCheck& check) {
+// One pairing radius: the ways of tracing in turn until one gives a layout the check takes.
+std::pair<GeneratedLayout, LayoutVerdict> generate_with_retries(
+    const TriangleMesh& mesh, const Features& features, const LayoutOptions& options,
+    double pairing_radius, const std::function<void(const LayoutProgress&)>& report,
+    const LayoutCheck& check, int& checks, double& earlier_s,
+    std::chrono::steady_clock::time_point start) {
   // The two ways of tracing fail in different places (camel: a ring around two adjacent
   // singularities that no seed's trace cuts open): where the first fails, the parametrization
   // is traced despite its folds, then the field's streamlines.
@@ -395,18 +400,19 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
     attempts.push_back(options);
     attempts.back().trace_parametrization = false;
   }
-  const auto start = std::chrono::steady_clock::now();
-  double earlier_s = 0;  // spent on failed attempts
-  const auto report = [&](const LayoutProgress& p) {
-    if (progress) progress({earlier_s + p.elapsed_s, p.stage, p.detail});
-  };
   for (size_t i = 0;; ++i) {
     std::string wrong;
     try {
-      GeneratedLayout out = generate_layout_once(mesh, features, attempts[i], report);
+      GeneratedLayout out =
+          generate_layout_once(mesh, features, attempts[i], pairing_radius, report);
       out.attempts = static_cast<int>(i) + 1;
-      if (check) wrong = check(out.layout);
-      if (wrong.empty()) return out;
+      LayoutVerdict verdict;
+      if (check) {
+        verdict = check(out.layout);
+        out.checked = checks++;
+      }
+      if (verdict.wrong.empty()) return {std::move(out), verdict};
+      wrong = verdict.wrong;
       if (i + 1 == attempts.size())
         throw std::runtime_error("no way of tracing gave a layout that passes: " + wrong);
     } catch (const NotCharts& e) {
@@ -416,6 +422,51 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
     earlier_s = since(start);
     report({0, "retry", wrong + "; tracing another way"});
   }
+}
+
+}  // namespace
+
+GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
+                                const LayoutOptions& options,
+                                const std::function<void(const LayoutProgress&)>& progress,
+                                const LayoutCheck& check) {
+  if (options.pairing_radii.empty() ||
+      !std::all_of(options.pairing_radii.begin(), options.pairing_radii.end(),
+                   [](double r) { return r >= 0 && std::isfinite(r); }))
+    throw std::invalid_argument(
+        "layout: pairing radii must be a non-empty list of finite values >= 0");
+  const auto start = std::chrono::steady_clock::now();
+  double earlier_s = 0;  // spent on earlier layouts
+  const auto report = [&](const LayoutProgress& p) {
+    if (progress) progress({earlier_s + p.elapsed_s, p.stage, p.detail});
+  };
+  const size_t radii = check ? options.pairing_radii.size() : 1;
+  std::optional<GeneratedLayout> best;
+  double best_badness = 0;
+  std::exception_ptr first_error;
+  int checks = 0, taken = 0;
+  for (size_t k = 0; k < radii; ++k) {
+    const double radius = options.pairing_radii[k];
+    if (k > 0) {
+      earlier_s = since(start);
+      std::ostringstream detail;
+      detail << "tracing again with pairing radius " << radius << " (" << k + 1 << " of " << radii
+             << ")";
+      report({0, "pairing", detail.str()});
+    }
+    try {
+      auto [out, verdict] = generate_with_retries(mesh, features, options, radius, report, check,
+                                                  checks, earlier_s, start);
+      ++taken;
+      if (!best || verdict.badness < best_badness)
+        best = std::move(out), best_badness = verdict.badness;
+    } catch (const std::runtime_error&) {
+      if (!first_error) first_error = std::current_exception();
+    }
+  }
+  if (!best) std::rethrow_exception(first_error);
+  best->candidates = taken;
+  return std::move(*best);
 }
 
 QuadwildFiles to_quadwild_files(const quant::Layout& layout) {

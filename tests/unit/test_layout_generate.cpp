@@ -89,9 +89,12 @@ TEST(LayoutGenerate, ALayoutTheCallerRejectsIsTracedAnotherWay) {
   const auto progress = [&](const layout::LayoutProgress& p) {
     if (p.stage == "retry") retries.push_back(p.detail);
   };
-  const layout::GeneratedLayout g = layout::generate_layout(
-      sphere, f, {}, progress,
-      [&](const quant::Layout&) { return ++checked == 1 ? "a pillow" : ""; });
+  layout::LayoutOptions one_radius;
+  one_radius.pairing_radii = {1};
+  const layout::GeneratedLayout g =
+      layout::generate_layout(sphere, f, one_radius, progress, [&](const quant::Layout&) {
+        return layout::LayoutVerdict{++checked == 1 ? "a pillow" : ""};
+      });
   expect_valid(sphere, g);
   EXPECT_EQ(checked, 2);
   EXPECT_EQ(g.attempts, 2);
@@ -100,8 +103,8 @@ TEST(LayoutGenerate, ALayoutTheCallerRejectsIsTracedAnotherWay) {
   checked = 0;
   retries.clear();
   try {
-    layout::generate_layout(sphere, f, {}, progress, [&](const quant::Layout&) {
-      return "pillow " + std::to_string(++checked);
+    layout::generate_layout(sphere, f, one_radius, progress, [&](const quant::Layout&) {
+      return layout::LayoutVerdict{"pillow " + std::to_string(++checked)};
     });
     ADD_FAILURE() << "every layout was rejected, yet one was returned";
   } catch (const std::runtime_error& e) {
@@ -109,6 +112,52 @@ TEST(LayoutGenerate, ALayoutTheCallerRejectsIsTracedAnotherWay) {
   }
   EXPECT_EQ(checked, 3);
   EXPECT_EQ(retries.size(), 2u);
+  // With two radii, every layout of both rejected: the first radius's error.
+  checked = 0;
+  try {
+    layout::generate_layout(sphere, f, {}, {}, [&](const quant::Layout&) {
+      return layout::LayoutVerdict{"pillow " + std::to_string(++checked)};
+    });
+    ADD_FAILURE() << "every layout was rejected, yet one was returned";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "no way of tracing gave a layout that passes: pillow 3");
+  }
+  EXPECT_EQ(checked, 6);
+}
+
+// With a check, one layout per pairing radius; the least bad is kept, the first of equals.
+TEST(LayoutGenerate, OfTheLayoutsOfEachPairingRadiusTheLeastBadIsKept) {
+  const TriangleMesh sphere = test::icosphere(3);
+  const layout::Features f = layout::detect_features(sphere, {});
+  std::vector<std::string> pairing;
+  const auto progress = [&](const layout::LayoutProgress& p) {
+    if (p.stage == "pairing") pairing.push_back(p.detail);
+  };
+  std::vector<double> badness{1, 0.5};
+  int calls = 0;
+  const auto rate = [&](const quant::Layout&) {
+    return layout::LayoutVerdict{"", badness[calls++]};
+  };
+  const layout::GeneratedLayout g = layout::generate_layout(sphere, f, {}, progress, rate);
+  expect_valid(sphere, g);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(g.checked, 1);
+  EXPECT_EQ(g.pairing_radius, 1.25);
+  EXPECT_EQ(g.candidates, 2);
+  EXPECT_EQ(pairing, std::vector<std::string>{"tracing again with pairing radius 1.25 (2 of 2)"});
+  badness = {0.5, 0.5};
+  calls = 0;
+  const layout::GeneratedLayout first = layout::generate_layout(sphere, f, {}, {}, rate);
+  EXPECT_EQ(first.checked, 0);
+  EXPECT_EQ(first.pairing_radius, 1);
+  // Without a check there is nothing to choose by: the first radius alone.
+  const layout::GeneratedLayout unchecked = layout::generate_layout(sphere, f, {});
+  EXPECT_EQ(unchecked.checked, -1);
+  EXPECT_EQ(unchecked.candidates, 1);
+  EXPECT_EQ(unchecked.pairing_radius, 1);
+  layout::LayoutOptions none;
+  none.pairing_radii.clear();
+  EXPECT_THROW(layout::generate_layout(sphere, f, none), std::invalid_argument);
 }
 
 TEST(LayoutGenerate, CylinderAndTorusAreCutOpenBySeeds) {

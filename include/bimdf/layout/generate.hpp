@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "bimdf/layout/cross_field.hpp"
 #include "bimdf/layout/features.hpp"
@@ -69,6 +70,15 @@ struct LayoutOptions {
   // caller rejects), try again along the parametrization despite its folds, then along the
   // field's streamlines.
   bool try_other_ways = true;
+  // Separatrices that pass this close to another singularity (in average edge lengths), head
+  // on against one of its separatrices, are steered into it and the pair traced as one line
+  // (tracing.hpp, TraceOptions::approach_radius). With a check (generate_layout), the layout
+  // is made once per radius and the one the check rates least bad is kept; without one, the
+  // first radius alone is used. Tracing reacts to small changes everywhere at once: radius
+  // 1.25 rid helmet of a strip between a singularity's separatrices and a trace passing it at
+  // 1.1 edges (SJ p5 0.637 → 0.819) but left bull an inverted quad, which radius 1 does not.
+  // Two radii cost two layouts and remeshes (docs/standalone_remesher.md).
+  std::vector<double> pairing_radii = {1, 1.25};
 };
 
 // One progress report (LayoutOptions' caller decides what to show): a stage has just ended.
@@ -91,20 +101,31 @@ struct GeneratedLayout {
   int folded_faces = 0;      // of the parametrization (trace_parametrization)
   bool traced_parametrization = false;  // false: the field's streamlines were traced
   int attempts = 1;  // tracings tried (LayoutOptions::try_other_ways), the last one kept
+  double pairing_radius = 1;  // the one of LayoutOptions::pairing_radii this layout was made with
+  int candidates = 1;         // layouts the check took, of which this one rated least bad
+  int checked = -1;           // which call of the check (from 0) rated this layout; −1: none
   double time_field_s = 0, time_parametrization_s = 0, time_trace_s = 0, time_cut_s = 0,
          time_patches_s = 0;
 };
 
-// A caller's verdict on a layout generate_layout made: what is wrong with it in words, or ""
-// to take it (e.g. the quad mesh quantized from it is not manifold).
-using LayoutCheck = std::function<std::string(const quant::Layout&)>;
+// A caller's verdict on a layout generate_layout made (e.g. from the quad mesh quantized from
+// it: quant::remesh_layout, quant::layout_badness).
+struct LayoutVerdict {
+  std::string wrong;   // what is wrong with it, in words, or "" to take it
+  double badness = 0;  // of the layouts taken (one per pairing radius), the least bad is kept
+};
+using LayoutCheck = std::function<LayoutVerdict(const quant::Layout&)>;
 
 // Builds the layout of `mesh` (prepare_surface's output) with `features` (detect_features or
 // features_from_edges on it), trying the other ways of tracing where the first leaves a patch
 // that cannot be a chart or `check` rejects its layout (LayoutOptions::try_other_ways;
-// progress then reports a "retry" stage). Throws std::runtime_error when a patch still cannot
-// be a chart (not a disk, or fewer than 3 boundary vertices), naming it, or when `check`
-// rejects the last way's layout too, with its reason.
+// progress then reports a "retry" stage). With a check, does so once per pairing radius
+// (LayoutOptions::pairing_radii; progress reports a "pairing" stage before each after the
+// first) and returns the layout taken with the least badness, the first of equals; the caller
+// finds what its check computed for it by GeneratedLayout::checked. Throws std::runtime_error
+// when a patch still cannot be a chart (not a disk, or fewer than 3 boundary vertices),
+// naming it, or when `check` rejects the last way's layout too, with its reason — for the
+// first radius, if no radius gives a layout.
 GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
                                 const LayoutOptions& options,
                                 const std::function<void(const LayoutProgress&)>& progress = {},

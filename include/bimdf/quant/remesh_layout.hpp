@@ -29,6 +29,12 @@ struct RemeshedLayout {
 // quad count). The caller times and prints; the library never does.
 using RemeshProgress = std::function<void(const std::string& stage, const std::string& detail)>;
 
+// How bad a remeshed layout is, for choosing among layouts of one surface
+// (layout::LayoutOptions::pairing_radii): inverted quads first, then the mean and 5th
+// percentile of the scaled Jacobian — inverted + (2 − mean − p5) / 5, so one inverted quad
+// outweighs any difference in the two.
+double layout_badness(const RemeshedLayout& remeshed);
+
 // Throws what quantize and tessellate throw.
 RemeshedLayout remesh_layout(const Layout& layout, const QuantizeOptions& quantize_options,
                              const SmoothingOptions& smoothing,
