@@ -53,6 +53,15 @@ void add_standalone_options(CLI::App* cmd, StandaloneOptions& o) {
   cmd->add_option("--layout-out", o.layout_out,
                   "Bare mesh: also write the patch layout made for it as QuadWild's files "
                   "(NAME.obj, NAME.patch, NAME.corners, NAME.feature, NAME.c_feature)");
+  cmd->add_option("--pairing-radii", o.layout.pairing_radii,
+                  "Bare mesh: a separatrix passing this close to another singularity (in average "
+                  "edge lengths) is traced into it; one layout per radius, the one whose quad mesh "
+                  "is least bad (inverted quads, then scaled Jacobian mean and 5th percentile) is "
+                  "kept. One radius takes half the time")
+      ->delimiter(',')
+      ->expected(1, 8)
+      ->default_str("1,1.25")
+      ->check(number_from(0.0, 100.0));
   cmd->add_flag("--info", o.info,
                 "Describe the input (bare mesh: components, border loops, genus, features, the "
                 "cross field's singularities) and stop; no -o needed");

@@ -5,6 +5,7 @@
 // the two. The options and their defaults are the CLI's, so both give the same meshes.
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -130,9 +131,13 @@ struct RemeshInput {
 };
 
 RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
+                                     const std::vector<double>& pairing_radii,
                                      const layout::LayoutCheck& check) {
   if (!(sharp_angle >= 0 && sharp_angle <= 180))
     throw py::value_error("sharp_angle must be in [0, 180]");
+  if (pairing_radii.empty() || !std::all_of(pairing_radii.begin(), pairing_radii.end(),
+                                            [](double r) { return r >= 0 && r <= 100; }))
+    throw py::value_error("pairing_radii must be a non-empty list of numbers in [0, 100]");
   PolygonMesh bare;
   std::string source;
   if (py::isinstance<py::str>(arg) || py::hasattr(arg, "__fspath__")) {
@@ -161,7 +166,9 @@ RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
     const layout::Surface surface = layout::prepare_surface(bare, source);
     const layout::Features features = layout::detect_features(surface.mesh, feature_options);
     sharp_edges = static_cast<int>(features.sharp_edges.size());
-    g = layout::generate_layout(surface.mesh, features, {}, {}, check);
+    layout::LayoutOptions options;
+    options.pairing_radii = pairing_radii;
+    g = layout::generate_layout(surface.mesh, features, options, {}, check);
   }
   int singular = 0;
   for (const auto& x : g->indices.singularities) singular += !x.on_border;
@@ -246,7 +253,8 @@ py::dict quantize(py::handle layout_arg, double scale, std::optional<double> edg
 py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge_length,
                  std::optional<int64_t> target_faces, bool align, int smooth_iterations,
                  double smooth_damping, int quality_rounds, int threads,
-                 std::optional<double> time_limit, double sharp_angle) {
+                 std::optional<double> time_limit, double sharp_angle,
+                 const std::vector<double>& pairing_radii) {
   const auto start = std::chrono::steady_clock::now();
   quant::QuantizeOptions options =
       quantize_options(scale, edge_length, target_faces, align, threads, time_limit);
@@ -261,7 +269,8 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
     return layout::LayoutVerdict{results.back().topology_difference,
                                  quant::layout_badness(results.back())};
   };
-  RemeshInput input = remesh_input_from_python(layout_arg, sharp_angle, quad_mesh_of);
+  RemeshInput input =
+      remesh_input_from_python(layout_arg, sharp_angle, pairing_radii, quad_mesh_of);
   const quant::Layout& layout = input.layout;
   if (!input.made) {
     std::string wrong;
@@ -438,12 +447,13 @@ void bind_mesh(py::module_& m) {
         py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
         py::arg("align") = true, py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
         py::arg("quality_rounds") = 30, py::arg("threads") = 1, py::arg("time_limit") = py::none(),
-        py::arg("sharp_angle") = 35.0,
+        py::arg("sharp_angle") = 35.0, py::arg("pairing_radii") = std::vector<double>{1, 1.25},
         "Remeshes as `bimdf remesh` does: a QuadWild layout (a path to NAME.obj with NAME.patch "
         "beside it, or a tuple (V, F, patch, corners)) is quantized and tessellated; a bare "
         "triangle or polygon mesh (a path to .obj/.off/.ply without NAME.patch, or a tuple "
         "(V, F)) first gets its own cross field and layout (features above sharp_angle "
-        "degrees; the report's 'layout' says how it was made). Returns (V, F, report): "
+        "degrees, one layout per pairing radius and the least bad kept, as --pairing-radii; the "
+        "report's 'layout' says how it was made). Returns (V, F, report): "
         "vertices float64 (n, 3), quads int64 (m, 4), the report dict.");
   m.def(
       "requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("scale") = 1.0,

@@ -83,7 +83,8 @@ def test_remesh_of_a_bare_mesh_equals_the_cli(tmp_path):
         np.testing.assert_array_equal(V, V_cli)
         assert report["quads"] == len(F) == cli_report["metrics"]["faces"]
         assert_same_numbers(report["metrics"], cli_report["metrics"])
-        for key in ("traced_along", "folded_faces", "attempts", "patches"):
+        for key in ("traced_along", "folded_faces", "attempts", "patches", "pairing_radius",
+                    "candidates"):
             assert report["layout"][key] == cli_report["layout"][key], key
         assert report["layout"]["field_singularities"] == cli_report["field"]["singularities"]
         assert report["layout"]["sharp_edges"] == cli_report["input"]["sharp_edges"]
@@ -98,6 +99,8 @@ def test_remesh_of_a_bare_mesh_refuses_a_non_manifold_one():
                             "expected at most 2 (non-manifold)")
     with pytest.raises(ValueError, match="sharp_angle must be in"):
         bimdf.remesh((V, F), sharp_angle=200)
+    with pytest.raises(ValueError, match="pairing_radii must be a non-empty list"):
+        bimdf.remesh((V, F), pairing_radii=[])
 
 
 def test_quantize_equals_the_cli_and_layouts_from_arrays_equal_files(tmp_path):

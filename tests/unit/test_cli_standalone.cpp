@@ -35,6 +35,7 @@ TEST_F(StandaloneCli, CubeBecomesSixRegularGridsWithItsEightCorners) {
   EXPECT_EQ(j["layout"]["patches"], 6);
   EXPECT_EQ(j["layout"]["traced_along"], "parametrization");  // exact on flat faces: no fold
   EXPECT_EQ(j["layout"]["folded_faces"], 0);
+  EXPECT_EQ(j["layout"]["candidates"], 2);  // one layout per default pairing radius, 1 and 1.25
   EXPECT_EQ(j["field"]["singularities"], 8);
   const auto& m = j["metrics"];
   EXPECT_EQ(m["manifold"], true);
@@ -47,6 +48,22 @@ TEST_F(StandaloneCli, CubeBecomesSixRegularGridsWithItsEightCorners) {
   for (const char* stage :
        {"read_s", "field_s", "parametrization_s", "trace_s", "cut_s", "patches_s", "total_s"})
     EXPECT_TRUE(j["time"].contains(stage)) << stage;
+}
+
+TEST_F(StandaloneCli, OnePairingRadiusMakesOneLayout) {
+  const std::string cube = write("cube.obj", obj_text(test::cube(6)));
+  const auto r = run("remesh " + cube + " -o " + path("out.obj") + " --json --pairing-radii 0.5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["layout"]["candidates"], 1);
+  EXPECT_EQ(j["layout"]["pairing_radius"], 0.5);
+  EXPECT_EQ(j["metrics"]["singular_vertices"], 8);
+  const auto bad = run("remesh " + cube + " -o " + path("bad.obj") + " --pairing-radii 1,-2");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err,
+            "error: --pairing-radii: expected a number from 0 to 100, got -2\n"
+            "Run 'bimdf remesh --help' for the options.\n");
+  EXPECT_FALSE(fs::exists(path("bad.obj")));
 }
 
 TEST_F(StandaloneCli, InfoDescribesTheInputAndWritesNothing) {
