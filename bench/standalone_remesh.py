@@ -69,6 +69,8 @@ def main():
         singular = sum(m["interior_singularities"].values())
         layout = j.get("layout", {})
         traced = f"{layout.get('traced_along', '')} ({layout.get('folded_faces', '')} folded)"
+        if layout.get("candidates", 1) > 1:
+            traced += f", pairing radius {layout.get('pairing_radius')}"
         tess = sum(t.get(k, 0) for k in ("patterns_s", "mapping_s", "smoothing_s", "polish_s"))
         closed_in = j["input"]["border_loops"] == 0
         topology = []
