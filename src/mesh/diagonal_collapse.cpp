@@ -2,6 +2,7 @@
 #include "mesh/diagonal_collapse.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 
 #include "mesh/quad_cleanup.hpp"
@@ -14,7 +15,61 @@ namespace {
 // collapse can only turn a quad over that the next pass then sees; in practice two suffice.
 constexpr int kMaxPasses = 8;
 
+// Whether merging corner b of quad q into its opposite corner a keeps the mesh manifold: a and
+// b share no other quad and no neighbour but q's two other corners, each of which keeps two
+// quads. `quads_at`: the quads at each vertex.
+bool keeps_manifold(const QuadMesh& mesh, const std::vector<std::vector<int>>& quads_at, int q,
+                    int a, int b) {
+  const std::array<int, 4>& quad = mesh.quads[q];
+  const int k = static_cast<int>(std::find(quad.begin(), quad.end(), a) - quad.begin());
+  const int c = quad[(k + 1) % 4], d = quad[(k + 3) % 4];
+  if (quad[(k + 2) % 4] != b || quads_at[c].size() < 3 || quads_at[d].size() < 3) return false;
+  for (int p : quads_at[a])
+    if (p != q && std::count(quads_at[b].begin(), quads_at[b].end(), p)) return false;
+  // The vertices joined to v by an edge of one of its quads.
+  const auto neighbours = [&](int v) {
+    std::vector<int> out;
+    for (int p : quads_at[v]) {
+      const std::array<int, 4>& r = mesh.quads[p];
+      const int i = static_cast<int>(std::find(r.begin(), r.end(), v) - r.begin());
+      out.push_back(r[(i + 1) % 4]);
+      out.push_back(r[(i + 3) % 4]);
+    }
+    return out;
+  };
+  const std::vector<int> around_b = neighbours(b);
+  for (int u : neighbours(a))
+    if (u != c && u != d && std::count(around_b.begin(), around_b.end(), u)) return false;
+  return true;
+}
+
+// Merges b into a (quad q goes) in `mesh` and `quads_at`, marking what is gone.
+void merge_corners(QuadMesh& mesh, std::vector<std::vector<int>>& quads_at, int q, int a, int b,
+                   std::vector<char>& quad_gone, std::vector<char>& vertex_gone) {
+  quad_gone[q] = 1;
+  vertex_gone[b] = 1;
+  for (int v : mesh.quads[q]) std::erase(quads_at[v], q);
+  for (int p : quads_at[b]) {
+    std::replace(mesh.quads[p].begin(), mesh.quads[p].end(), b, a);
+    quads_at[a].push_back(p);
+  }
+  quads_at[b].clear();
+}
+
 }  // namespace
+
+bool collapse_diagonal(QuadMesh& mesh, int q, int keep, std::vector<int>& renumber) {
+  const std::array<int, 4> quad = mesh.quads.at(q);
+  const auto at = std::find(quad.begin(), quad.end(), keep);
+  if (at == quad.end()) throw std::invalid_argument("collapse_diagonal: keep is not a corner");
+  const int drop = quad[(at - quad.begin() + 2) % 4];
+  std::vector<std::vector<int>> quads_at = quads_at_vertices(mesh);
+  if (!keeps_manifold(mesh, quads_at, q, keep, drop)) return false;
+  std::vector<char> quad_gone(mesh.num_quads(), 0), vertex_gone(mesh.num_vertices(), 0);
+  merge_corners(mesh, quads_at, q, keep, drop, quad_gone, vertex_gone);
+  drop_gone(mesh, vertex_gone, quad_gone, renumber);
+  return true;
+}
 
 int collapse_inverted_quads(QuadMesh& mesh, std::vector<char> may_go, std::vector<int>& renumber,
                             std::vector<int>& merged) {
@@ -23,21 +78,8 @@ int collapse_inverted_quads(QuadMesh& mesh, std::vector<char> may_go, std::vecto
   for (int v = 0; v < nv; ++v) renumber[v] = v;
   merged.clear();
   keep_border(mesh, may_go);
-  std::vector<std::vector<int>> quads_at(nv);
-  for (int q = 0; q < mesh.num_quads(); ++q)
-    for (int v : mesh.quads[q]) quads_at[v].push_back(q);
+  std::vector<std::vector<int>> quads_at = quads_at_vertices(mesh);
   std::vector<char> quad_gone(mesh.num_quads(), 0), vertex_gone(nv, 0), took(nv, 0);
-  // The vertices joined to v by an edge of one of its quads.
-  const auto neighbours = [&](int v) {
-    std::vector<int> out;
-    for (int q : quads_at[v]) {
-      const std::array<int, 4>& r = mesh.quads[q];
-      const int k = static_cast<int>(std::find(r.begin(), r.end(), v) - r.begin());
-      out.push_back(r[(k + 1) % 4]);
-      out.push_back(r[(k + 3) % 4]);
-    }
-    return out;
-  };
   // The worst scaled Jacobian of the quads at a and b but `skip`, with b read as a.
   const auto worst_merged = [&](int a, int b, int skip) {
     double worst = 2;
@@ -66,15 +108,8 @@ int collapse_inverted_quads(QuadMesh& mesh, std::vector<char> may_go, std::vecto
       double best = -2;
       int keep = -1, drop = -1;
       for (int k = 0; k < 4; ++k) {
-        const int a = quad[k], b = quad[(k + 2) % 4], c = quad[(k + 1) % 4], d = quad[(k + 3) % 4];
-        if (!may_go[b] || quads_at[c].size() < 3 || quads_at[d].size() < 3) continue;
-        bool manifold = true;
-        for (int p : quads_at[a])
-          if (p != q && std::count(quads_at[b].begin(), quads_at[b].end(), p)) manifold = false;
-        const std::vector<int> around_b = neighbours(b);
-        for (int u : neighbours(a))
-          if (u != c && u != d && std::count(around_b.begin(), around_b.end(), u)) manifold = false;
-        if (!manifold) continue;
+        const int a = quad[k], b = quad[(k + 2) % 4];
+        if (!may_go[b] || !keeps_manifold(mesh, quads_at, q, a, b)) continue;
         double before = 2;
         for (int v : {a, b})
           for (int p : quads_at[v]) before = std::min(before, scaled_jacobian(mesh, mesh.quads[p]));
@@ -82,15 +117,8 @@ int collapse_inverted_quads(QuadMesh& mesh, std::vector<char> may_go, std::vecto
         if (after > before && after > best) best = after, keep = a, drop = b;
       }
       if (keep < 0) continue;
-      quad_gone[q] = 1;
-      vertex_gone[drop] = 1;
+      merge_corners(mesh, quads_at, q, keep, drop, quad_gone, vertex_gone);
       took[keep] = 1;
-      for (int v : quad) std::erase(quads_at[v], q);
-      for (int p : quads_at[drop]) {
-        std::replace(mesh.quads[p].begin(), mesh.quads[p].end(), drop, keep);
-        quads_at[keep].push_back(p);
-      }
-      quads_at[drop].clear();
       ++collapsed;
     }
     if (collapsed == before_pass) break;

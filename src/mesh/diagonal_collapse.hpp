@@ -28,9 +28,16 @@ namespace bimdf::detail {
 int collapse_inverted_quads(QuadMesh& mesh, std::vector<char> may_go, std::vector<int>& renumber,
                             std::vector<int>& merged);
 
-// The same on a tessellation of `layout`, sparing vertices on its feature curves and corners
-// (quad_cleanup.hpp: off_features); `origin` and the charts' quad counts follow (the merged
-// vertex keeps the origin of the one it kept).
+// One collapse, whatever it does to the quads' shapes (for a caller that settles the vertices
+// around and judges after): corner `keep` of quad q takes in its opposite corner, if that keeps
+// the mesh manifold (as above); else returns false and leaves the mesh as it was. `renumber` as
+// above; the merged vertex is renumber[keep]. Throws std::invalid_argument if `keep` is not a
+// corner of q.
+bool collapse_diagonal(QuadMesh& mesh, int q, int keep, std::vector<int>& renumber);
+
+// The same as collapse_inverted_quads above on a tessellation of `layout`, sparing vertices on its
+// feature curves and corners (quad_cleanup.hpp: off_features); `origin` and the charts' quad counts
+// follow (the merged vertex keeps the origin of the one it kept).
 int collapse_inverted_quads(const quant::Layout& layout, quant::Tessellation& tessellation,
                             std::vector<int>& merged);
 

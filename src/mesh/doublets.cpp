@@ -14,9 +14,7 @@ int remove_doublets(QuadMesh& mesh, std::vector<char> may_go, std::vector<int>& 
   renumber.resize(nv);
   for (int v = 0; v < nv; ++v) renumber[v] = v;
   keep_border(mesh, may_go);
-  std::vector<std::vector<int>> quads_at(nv);
-  for (int q = 0; q < mesh.num_quads(); ++q)
-    for (int v : mesh.quads[q]) quads_at[v].push_back(q);
+  std::vector<std::vector<int>> quads_at = quads_at_vertices(mesh);
   std::vector<char> quad_gone(mesh.num_quads(), 0), vertex_gone(nv, 0);
   const auto rotated_to = [&](int q, int v) {
     std::array<int, 4> r = mesh.quads[q];

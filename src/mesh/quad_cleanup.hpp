@@ -15,6 +15,9 @@ namespace bimdf::detail {
 // curves and corners (a vertex on one carries the feature and must stay), else 0.
 std::vector<char> off_features(const quant::Layout& layout, const quant::Tessellation& t);
 
+// Per vertex, the quads with a corner there.
+std::vector<std::vector<int>> quads_at_vertices(const QuadMesh& mesh);
+
 // Clears `may_go` for the vertices on the mesh's border (an edge of one quad marks them).
 void keep_border(const QuadMesh& mesh, std::vector<char>& may_go);
 

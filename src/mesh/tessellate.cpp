@@ -10,9 +10,8 @@
 #include "core/stopwatch.hpp"
 #include "mesh/chart_parametrization.hpp"
 #include "mesh/chart_placement.hpp"
-#include "mesh/diagonal_collapse.hpp"
 #include "mesh/doublets.hpp"
-#include "mesh/quad_cleanup.hpp"
+#include "mesh/inverted_cleanup.hpp"
 #include "mesh/smoothing.hpp"
 
 namespace bimdf::quant {
@@ -85,47 +84,6 @@ std::vector<std::vector<int>> subside_vertices(const Layout& layout,
   return out;
 }
 
-// Inverted quads that polishing left are collapsed (diagonal_collapse.hpp) and the vertices
-// around each merged one — two rings, where the collapse changed the shape of quads — are
-// polished again. A merged vertex inside the charts may move on every chart its quads now lie
-// in; one on a curve keeps sliding along it.
-int collapse_inverted(const Layout& layout, const SmoothingOptions& smoothing, Tessellation& t) {
-  std::vector<int> merged;
-  const int collapsed = bimdf::detail::collapse_inverted_quads(layout, t, merged);
-  if (collapsed == 0 || smoothing.quality_rounds <= 0) return collapsed;
-  const std::vector<char> off = bimdf::detail::off_features(layout, t);
-  const int nv = t.mesh.num_vertices();
-  std::vector<std::vector<int>> quads_at(nv);
-  for (int q = 0; q < t.mesh.num_quads(); ++q)
-    for (int v : t.mesh.quads[q]) quads_at[v].push_back(q);
-  std::vector<std::vector<int>> vertex_charts(nv);
-  std::vector<char> in_region(nv, 0);
-  std::vector<int> region;
-  const auto add = [&](int v) {
-    if (!in_region[v]) in_region[v] = 1, region.push_back(v);
-  };
-  for (int v : merged) {
-    const VertexOrigin& o = t.origin[v];
-    const bool free_subside = o.subside >= 0 && off[v] && !layout.subsides[o.subside].on_border();
-    if (o.chart >= 0 || free_subside) {
-      for (int q : quads_at[v]) vertex_charts[v].push_back(t.mesh.quad_patch[q]);
-      std::sort(vertex_charts[v].begin(), vertex_charts[v].end());
-      vertex_charts[v].erase(std::unique(vertex_charts[v].begin(), vertex_charts[v].end()),
-                             vertex_charts[v].end());
-    }
-    add(v);
-  }
-  for (int ring = 0; ring < 2; ++ring) {
-    const std::vector<int> from = region;
-    for (int v : from)
-      for (int q : quads_at[v])
-        for (int u : t.mesh.quads[q]) add(u);
-  }
-  SurfaceSmoother smoother(layout, t, &vertex_charts);
-  smoother.polish(smoothing, region);
-  return collapsed;
-}
-
 }  // namespace
 
 Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& lengths,
@@ -195,7 +153,7 @@ Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& length
     smoother.polish(smoothing);
     result.time_polish_s = seconds_since(start);
     start = std::chrono::steady_clock::now();
-    result.collapsed_inverted = collapse_inverted(layout, smoothing, result);
+    result.collapsed_inverted = remove_inverted_quads(layout, smoothing, result);
     result.removed_doublets = bimdf::detail::remove_doublets(layout, result);
     result.time_smoothing_s += seconds_since(start);
   }

@@ -80,5 +80,26 @@ TEST(DiagonalCollapse, NothingWithoutAnInvertedQuadOrWhereItWouldPinchTheMesh) {
   EXPECT_EQ(strip.num_quads(), 2);
 }
 
+TEST(DiagonalCollapse, OneCollapseOnRequestWhateverTheShapes) {
+  // On the flat grid (nothing inverted) 5 takes in 10: quad 4 goes, 5 keeps its place and now
+  // has six quads; the quads that had 10 have 5 instead.
+  QuadMesh m = dented_grid();
+  m.vertices[10] = {2, 2, 0};
+  std::vector<int> renumber;
+  ASSERT_TRUE(detail::collapse_diagonal(m, 4, 5, renumber));
+  EXPECT_EQ(m.num_quads(), 8);
+  EXPECT_EQ(renumber[10], -1);
+  EXPECT_EQ(renumber[5], 5);
+  EXPECT_EQ(renumber[11], 10);
+  EXPECT_EQ(m.quads[4], (std::array<int, 4>{6, 7, 10, 5}));  // was 6 7 11 10
+  EXPECT_EQ(m.vertices[5], (std::array<double, 3>{1, 1, 0}));
+  // Corner 0 of quad 0 is on the border with one quad: 5 into 0 would leave 1 and 4 with one
+  // quad each; refused, nothing changed.
+  QuadMesh grid = dented_grid();
+  EXPECT_FALSE(detail::collapse_diagonal(grid, 0, 0, renumber));
+  EXPECT_EQ(grid.num_quads(), 9);
+  EXPECT_THROW(detail::collapse_diagonal(grid, 0, 15, renumber), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace bimdf
