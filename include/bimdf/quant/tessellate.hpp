@@ -46,7 +46,8 @@ struct Tessellation {
   // (src/mesh/doublets.hpp); then the charts' quad counts no longer add up to the patterns'.
   int removed_doublets = 0;
   // Inverted quads left after polishing that were removed by merging two opposite corners
-  // (src/mesh/diagonal_collapse.hpp); the vertices around were polished again.
+  // (src/mesh/inverted_cleanup.hpp, diagonal_collapse.hpp); the vertices within two rings of
+  // each merged one were smoothed and polished again.
   int collapsed_inverted = 0;
 };
 
