@@ -359,22 +359,22 @@ int run_remesh(const RemeshCommandOptions& o) {
                                "); nothing written");
   }
   const size_t chosen = bare ? made.checked : results.size() - 1;
-  const quant::RemeshedLayout* r = &results.at(chosen);
+  const quant::RemeshedLayout& r = results.at(chosen);
   const double read_s = ready_s.at(chosen);
-  const quant::Tessellation& t = r->tessellation;
-  write_quantization_model(r->quantization, o.quantize);
+  const quant::Tessellation& t = r.tessellation;
+  write_quantization_model(r.quantization, o.quantize);
   write_mesh(t, o, {o.quantize.layout});
   const QuantizationReport qr =
-      report_quantization(layout, r->quantization, o.quantize, read_s, read_s + r->quantize_s);
+      report_quantization(layout, r.quantization, o.quantize, read_s, read_s + r.quantize_s);
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
-  TessellationReport mr = report_metrics(r->metrics);
+  TessellationReport mr = report_metrics(r.metrics);
   json j = tr.j;
-  if (!o.compare.empty()) j["compare"] = compare_with(r->metrics, o.compare, &layout.mesh, mr.text);
+  if (!o.compare.empty()) j["compare"] = compare_with(r.metrics, o.compare, &layout.mesh, mr.text);
   j["quantization"] = qr.json;
   j["metrics"] = mr.j;
   j["time"]["read_s"] = read_s;
-  j["time"]["quantize_s"] = r->quantize_s;
-  j["time"]["metrics_s"] = r->metrics_s;
+  j["time"]["quantize_s"] = r.quantize_s;
+  j["time"]["metrics_s"] = r.metrics_s;
   j["time"]["total_s"] = seconds_since(start);
   if (bare) {
     for (const auto& [key, value] : made.json.items()) j[key] = value;

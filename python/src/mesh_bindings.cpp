@@ -282,16 +282,16 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
       throw std::runtime_error("the quad mesh would not have the layout's topology (" + wrong +
                                ")");
   }
-  const quant::RemeshedLayout* r = &results.at(input.checked >= 0 ? input.checked : 0);
-  const quant::Tessellation& t = r->tessellation;
+  const quant::RemeshedLayout& r = results.at(input.checked >= 0 ? input.checked : 0);
+  const quant::Tessellation& t = r.tessellation;
   py::dict report;
   report["quads"] = t.mesh.num_quads();
-  report["quantization"] = quantization_to_python(r->quantization);
-  report["metrics"] = metrics_to_python(r->metrics);
+  report["quantization"] = quantization_to_python(r.quantization);
+  report["metrics"] = metrics_to_python(r.metrics);
   report["warnings"] = layout.warnings;
   if (input.made) report["layout"] = *input.made;
   report["time"] =
-      py::dict(py::arg("quantize_s") = r->quantize_s, py::arg("metrics_s") = r->metrics_s,
+      py::dict(py::arg("quantize_s") = r.quantize_s, py::arg("metrics_s") = r.metrics_s,
                py::arg("patterns_s") = t.time_patterns_s, py::arg("mapping_s") = t.time_mapping_s,
                py::arg("smoothing_s") = t.time_smoothing_s, py::arg("polish_s") = t.time_polish_s,
                py::arg("total_s") = seconds_since(start));

@@ -5,6 +5,7 @@
 #include <random>
 #include <utility>
 
+#include "mesh/quad_adjacency.hpp"
 #include "mesh/quad_quality.hpp"
 #include "mesh/smoothing.hpp"
 
@@ -65,9 +66,7 @@ void retry_tangled_charts(const Layout& layout, const std::vector<int64_t>& leng
   int64_t budget = kRetryWork * mesh.num_vertices() * smoothing.iterations;
   std::vector<std::vector<int>> chart_quads(layout.charts.size());
   for (int f = 0; f < mesh.num_quads(); ++f) chart_quads[mesh.quad_patch[f]].push_back(f);
-  std::vector<std::vector<int>> vertex_quads(mesh.num_vertices());
-  for (int f = 0; f < mesh.num_quads(); ++f)
-    for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
+  const std::vector<std::vector<int>> vertex_quads = bimdf::detail::quads_at_vertices(mesh);
   // Runs `start` and then smoothing over `vertices`; undoes both unless the quads touching
   // `vertices` end up less tangled.
   const auto attempt = [&](std::vector<int> vertices, const std::function<void()>& start,

@@ -82,12 +82,12 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
   std::vector<std::array<int, 4>> given_up;
   for (;;) {
     const std::vector<int> inverted = inverted_quads(t.mesh);
+    std::vector<char> may_go = bimdf::detail::off_features(layout, t);
+    bimdf::detail::keep_border(t.mesh, may_go);
     bool kept = false;
     for (int q : inverted) {
       const std::array<int, 4> quad = t.mesh.quads[q];
       if (std::find(given_up.begin(), given_up.end(), quad) != given_up.end()) continue;
-      std::vector<char> may_go = bimdf::detail::off_features(layout, t);
-      bimdf::detail::keep_border(t.mesh, may_go);
       for (int k = 0; k < 4 && !kept; ++k) {
         const int keep = quad[k], drop = quad[(k + 2) % 4];
         if (!may_go[drop]) continue;
@@ -97,11 +97,11 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
         bimdf::detail::follow_renumbering(trial, renumber);
         const std::vector<int> region = settle_around(layout, smoothing, trial, {renumber[keep]});
         // Before: the same vertices (but the one that went) in t, the inverted quad included.
+        std::vector<char> in_region(trial.mesh.num_vertices(), 0);
+        for (int v : region) in_region[v] = 1;
         std::vector<int> old_region;
         for (int v = 0; v < static_cast<int>(renumber.size()); ++v)
-          if (renumber[v] >= 0 &&
-              std::find(region.begin(), region.end(), renumber[v]) != region.end())
-            old_region.push_back(v);
+          if (renumber[v] >= 0 && in_region[renumber[v]]) old_region.push_back(v);
         if (inverted_quads(trial.mesh).size() < inverted.size() &&
             worst_at(trial.mesh, region) > worst_at(t.mesh, old_region)) {
           t = std::move(trial);

@@ -8,6 +8,7 @@
 
 #include "core/union_find.hpp"
 #include "mesh/closest_point.hpp"
+#include "mesh/quad_adjacency.hpp"
 #include "mesh/quad_quality.hpp"
 #include "mesh/vec3.hpp"
 
@@ -80,9 +81,7 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
   m.border_loops = edge_pieces(nv, boundary);
 
   // Fans: quads around a vertex connected through the edges at that vertex.
-  std::vector<std::vector<int>> vertex_quads(nv);
-  for (int f = 0; f < nf; ++f)
-    for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
+  const std::vector<std::vector<int>> vertex_quads = detail::quads_at_vertices(mesh);
   for (int v = 0; v < nv; ++v) {
     if (vertex_quads[v].empty()) continue;
     std::set<int> seen{vertex_quads[v][0]};

@@ -28,13 +28,6 @@ std::vector<char> off_features(const quant::Layout& layout, const quant::Tessell
   return out;
 }
 
-std::vector<std::vector<int>> quads_at_vertices(const QuadMesh& mesh) {
-  std::vector<std::vector<int>> quads_at(mesh.num_vertices());
-  for (int q = 0; q < mesh.num_quads(); ++q)
-    for (int v : mesh.quads[q]) quads_at[v].push_back(q);
-  return quads_at;
-}
-
 void keep_border(const QuadMesh& mesh, std::vector<char>& may_go) {
   std::map<std::pair<int, int>, int> edge_quads;
   for (const auto& q : mesh.quads)

@@ -8,15 +8,13 @@
 #include "bimdf/mesh.hpp"
 #include "bimdf/quant/layout.hpp"
 #include "bimdf/quant/tessellate.hpp"
+#include "mesh/quad_adjacency.hpp"
 
 namespace bimdf::detail {
 
 // Per quad mesh vertex of a tessellation of `layout`: 1 if it is off the layout's feature
 // curves and corners (a vertex on one carries the feature and must stay), else 0.
 std::vector<char> off_features(const quant::Layout& layout, const quant::Tessellation& t);
-
-// Per vertex, the quads with a corner there.
-std::vector<std::vector<int>> quads_at_vertices(const QuadMesh& mesh);
 
 // Clears `may_go` for the vertices on the mesh's border (an edge of one quad marks them).
 void keep_border(const QuadMesh& mesh, std::vector<char>& may_go);

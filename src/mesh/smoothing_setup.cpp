@@ -8,6 +8,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "mesh/quad_adjacency.hpp"
+
 namespace bimdf::quant {
 namespace {
 
@@ -141,9 +143,7 @@ SurfaceSmoother::Setup::Setup(const Layout& layout, Tessellation& t,
     }
   // Each edge was added once from each of its (at most two) quads: the mean is unaffected
   // for interior edges, and boundary vertices are fixed anyway.
-  std::vector<std::vector<int>> vertex_quads(nv);
-  for (int f = 0; f < mesh.num_quads(); ++f)
-    for (int v : mesh.quads[f]) vertex_quads[v].push_back(f);
+  std::vector<std::vector<int>> vertex_quads = bimdf::detail::quads_at_vertices(mesh);
   this->curve_polylines = std::move(curve_polylines);
   this->charts = std::move(charts);
   this->curve = std::move(curve);
