@@ -15,10 +15,12 @@ namespace {
 
 // Smooths (relaxation and untangling, as tessellate's first phase) and polishes the vertices
 // within two rings of `merged`, and returns them. A merged vertex inside the charts may move on
-// every chart its quads now lie in; one on a curve keeps sliding along it. Untangling matters:
-// polishing alone never accepts a move while a quad at the vertex is turned over.
+// every chart its quads now lie in; one on a curve keeps sliding along it, unless `released`
+// marks it: released vertices (wherever they are) move on their quads' charts too. Untangling
+// matters: polishing alone never accepts a move while a quad at the vertex is turned over.
 std::vector<int> settle_around(const Layout& layout, const SmoothingOptions& smoothing,
-                               Tessellation& t, const std::vector<int>& merged) {
+                               Tessellation& t, const std::vector<int>& merged,
+                               const std::vector<char>& released) {
   const std::vector<char> off = bimdf::detail::off_features(layout, t);
   const int nv = t.mesh.num_vertices();
   const std::vector<std::vector<int>> quads_at = bimdf::detail::quads_at_vertices(t.mesh);
@@ -28,15 +30,19 @@ std::vector<int> settle_around(const Layout& layout, const SmoothingOptions& smo
   const auto add = [&](int v) {
     if (!in_region[v]) in_region[v] = 1, region.push_back(v);
   };
+  const auto free_on_own_charts = [&](int v) {
+    vertex_charts[v].clear();
+    for (int q : quads_at[v]) vertex_charts[v].push_back(t.mesh.quad_patch[q]);
+    std::sort(vertex_charts[v].begin(), vertex_charts[v].end());
+    vertex_charts[v].erase(std::unique(vertex_charts[v].begin(), vertex_charts[v].end()),
+                           vertex_charts[v].end());
+  };
+  for (int v = 0; v < nv; ++v)
+    if (released[v]) free_on_own_charts(v);
   for (int v : merged) {
     const VertexOrigin& o = t.origin[v];
     const bool free_subside = o.subside >= 0 && off[v] && !layout.subsides[o.subside].on_border();
-    if (o.chart >= 0 || free_subside) {
-      for (int q : quads_at[v]) vertex_charts[v].push_back(t.mesh.quad_patch[q]);
-      std::sort(vertex_charts[v].begin(), vertex_charts[v].end());
-      vertex_charts[v].erase(std::unique(vertex_charts[v].begin(), vertex_charts[v].end()),
-                             vertex_charts[v].end());
-    }
+    if (o.chart >= 0 || free_subside) free_on_own_charts(v);
     add(v);
   }
   for (int ring = 0; ring < 2; ++ring) {
@@ -69,6 +75,59 @@ double worst_at(const QuadMesh& mesh, const std::vector<int>& vertices) {
   return worst;
 }
 
+// Frees vertices of feature curves from their curve where an inverted quad has them as corners:
+// first its own corners, then those of the quads around them; a copy is smoothed and polished
+// as after a collapse and kept if it has fewer inverted quads and a better worst quad around.
+// A feature corner, a border vertex and a vertex already freed stay as they are. Returns how
+// many vertices were freed; `released` marks them (they keep moving freely in later settles).
+int release_from_curves(const Layout& layout, const SmoothingOptions& smoothing, Tessellation& t,
+                        std::vector<char>& released) {
+  std::vector<char> on_curve = bimdf::detail::off_features(layout, t);
+  for (char& c : on_curve) c = !c;
+  std::vector<char> inner(t.mesh.num_vertices(), 1);
+  bimdf::detail::keep_border(t.mesh, inner);
+  std::vector<char> feature_corner(layout.mesh.num_vertices(), 0);
+  for (int v : layout.feature_corners) feature_corner[v] = 1;
+  const auto may_leave = [&](int v) {
+    const VertexOrigin& o = t.origin[v];
+    return on_curve[v] && inner[v] && !released[v] &&
+           (o.subside >= 0 || (o.mesh_vertex >= 0 && !feature_corner[o.mesh_vertex]));
+  };
+  const std::vector<std::vector<int>> quads_at = bimdf::detail::quads_at_vertices(t.mesh);
+  int freed_in_all = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int q : inverted_quads(t.mesh)) {
+      for (int rings = 0; rings < 2; ++rings) {
+        const std::vector<int> now = inverted_quads(t.mesh);
+        if (std::find(now.begin(), now.end(), q) == now.end()) break;
+        std::vector<int> around(t.mesh.quads[q].begin(), t.mesh.quads[q].end());
+        if (rings == 1)
+          for (int c : t.mesh.quads[q])
+            for (int f : quads_at[c])
+              around.insert(around.end(), t.mesh.quads[f].begin(), t.mesh.quads[f].end());
+        std::vector<char> trial_released = released;
+        std::vector<int> freed;
+        for (int v : around)
+          if (may_leave(v) && !trial_released[v]) trial_released[v] = 1, freed.push_back(v);
+        if (freed.empty()) continue;
+        Tessellation trial = t;
+        const std::vector<int> region =
+            settle_around(layout, smoothing, trial, freed, trial_released);
+        if (inverted_quads(trial.mesh).size() < now.size() &&
+            worst_at(trial.mesh, region) > worst_at(t.mesh, region)) {
+          t = std::move(trial);
+          released = std::move(trial_released);
+          freed_in_all += static_cast<int>(freed.size());
+          changed = true;
+          break;
+        }
+      }
+    }
+  }
+  return freed_in_all;
+}
+
 }  // namespace
 
 int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothing,
@@ -76,7 +135,8 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
   std::vector<int> merged;
   int collapsed = bimdf::detail::collapse_inverted_quads(layout, t, merged);
   if (smoothing.quality_rounds <= 0) return collapsed;
-  if (collapsed > 0) settle_around(layout, smoothing, t, merged);
+  if (collapsed > 0)
+    settle_around(layout, smoothing, t, merged, std::vector<char>(t.mesh.num_vertices(), 0));
   // Trial collapses, one inverted quad at a time; the list is made again after each kept one
   // (the indices shift), and a quad no trial helped is not tried again.
   std::vector<std::array<int, 4>> given_up;
@@ -95,7 +155,9 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
         std::vector<int> renumber;
         if (!bimdf::detail::collapse_diagonal(trial.mesh, q, keep, renumber)) continue;
         bimdf::detail::follow_renumbering(trial, renumber);
-        const std::vector<int> region = settle_around(layout, smoothing, trial, {renumber[keep]});
+        const std::vector<int> region =
+            settle_around(layout, smoothing, trial, {renumber[keep]},
+                          std::vector<char>(trial.mesh.num_vertices(), 0));
         // Before: the same vertices (but the one that went) in t, the inverted quad included.
         std::vector<char> in_region(trial.mesh.num_vertices(), 0);
         for (int v : region) in_region[v] = 1;
@@ -121,6 +183,8 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
     }
     if (!kept) break;
   }
+  std::vector<char> released(t.mesh.num_vertices(), 0);
+  t.released_from_curves = release_from_curves(layout, smoothing, t, released);
   return collapsed;
 }
 

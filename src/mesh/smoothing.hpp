@@ -17,8 +17,10 @@ class SurfaceSmoother {
   // smoother, and the mesh's connectivity must not change). `vertex_charts`, when given, has
   // one entry per quad mesh vertex: a non-empty entry replaces the charts that vertex may move
   // on (and be projected onto), which its origin would otherwise decide — for vertices made of
-  // several layout points (tmesh collapse) that belong to more charts than one origin names.
-  // Meant for vertices not on a border or feature curve; empty entries change nothing.
+  // several layout points (tmesh collapse) that belong to more charts than one origin names,
+  // and for feature-curve vertices let off their curve (inverted_cleanup.hpp): a non-empty
+  // entry also frees the vertex from the curve it would slide along. Empty entries change
+  // nothing.
   SurfaceSmoother(const Layout& layout, Tessellation& tessellation,
                   const std::vector<std::vector<int>>* vertex_charts = nullptr);
   ~SurfaceSmoother();

@@ -129,7 +129,8 @@ SurfaceSmoother::Setup::Setup(const Layout& layout, Tessellation& t,
       curve[v] = joint_curve[o.mesh_vertex];
     else if (o.mesh_vertex >= 0 && !pinned[o.mesh_vertex])
       charts[v].assign(charts_at[o.mesh_vertex].begin(), charts_at[o.mesh_vertex].end());
-    if (vertex_charts && !(*vertex_charts)[v].empty()) charts[v] = (*vertex_charts)[v];
+    if (vertex_charts && !(*vertex_charts)[v].empty())
+      charts[v] = (*vertex_charts)[v], curve[v] = -1;
   }
   std::vector<std::vector<std::array<int, 3>>> corners(nv);  // (next, opposite, previous)
   for (const auto& q : mesh.quads)

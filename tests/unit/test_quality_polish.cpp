@@ -13,6 +13,7 @@
 #include "bimdf/quant/quantize.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "mesh/quad_quality.hpp"
+#include "mesh/smoothing.hpp"
 #include "tmesh_collapse_support.hpp"
 
 namespace bimdf::quant {
@@ -147,6 +148,60 @@ TEST(QualityPolish, RaisesTheBunnysQualityWithinItsGuarantees) {
   }
   EXPECT_GT(at_corners, 10);
   EXPECT_GT(on_curves, 50);
+}
+
+// A feature-curve vertex pushed off its curve (towards the middle of one of its quads): a
+// smoother that is given charts for it (as inverted-quad cleanup does for a vertex let off its
+// curve) moves it on those charts and leaves it off the curve; an ordinary one puts it back on
+// the curve.
+TEST(QualityPolish, AVertexGivenChartsLeavesItsCurve) {
+  const Layout layout =
+      read_quadwild_layout(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj");
+  const std::vector<int64_t> lengths = quantize(layout, QuantizeOptions{}).lengths();
+  const Tessellation start = tessellate(layout, lengths, SmoothingOptions{});
+  std::set<std::pair<int, int>> feature;
+  for (const auto& e : layout.feature_edges)
+    feature.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
+  const auto along_feature = [&](const Subside& s) {
+    bool along = !s.on_border();
+    for (size_t i = 0; i + 1 < s.vertices.size() && along; ++i)
+      along = feature.count({std::min(s.vertices[i], s.vertices[i + 1]),
+                             std::max(s.vertices[i], s.vertices[i + 1])}) > 0;
+    return along;
+  };
+  int v = -1;
+  for (int u = 0; u < start.mesh.num_vertices() && v < 0; ++u)
+    if (start.origin[u].subside >= 0 && along_feature(layout.subsides[start.origin[u].subside]))
+      v = u;
+  ASSERT_GE(v, 0);
+  const std::vector<int>& chain = layout.subsides[start.origin[v].subside].vertices;
+  const double scale = layout.average_edge_length;
+  std::vector<std::vector<int>> charts(start.mesh.num_vertices());
+  std::array<double, 3> pushed{0, 0, 0};
+  for (int q = 0; q < start.mesh.num_quads(); ++q) {
+    const auto& quad = start.mesh.quads[q];
+    if (std::find(quad.begin(), quad.end(), v) == quad.end()) continue;
+    charts[v].push_back(start.mesh.quad_patch[q]);
+    if (charts[v].size() > 1) continue;
+    for (int u : quad)
+      for (int d = 0; d < 3; ++d) pushed[d] += start.mesh.vertices[u][d] / 4;
+  }
+  std::sort(charts[v].begin(), charts[v].end());
+  charts[v].erase(std::unique(charts[v].begin(), charts[v].end()), charts[v].end());
+  ASSERT_EQ(charts[v].size(), 2u);  // the curve runs between two charts
+  for (const bool given : {true, false}) {
+    Tessellation t = start;
+    t.mesh.vertices[v] = pushed;
+    ASSERT_GT(distance_to_polyline(layout, chain, t.mesh.vertices[v]), 1e-3 * scale);
+    SurfaceSmoother smoother(layout, t, given ? &charts : nullptr);
+    smoother.run(SmoothingOptions{}, {v});
+    smoother.polish(SmoothingOptions{}, {v});
+    const double off = distance_to_polyline(layout, chain, t.mesh.vertices[v]);
+    if (given)
+      EXPECT_GT(off, 1e-6 * scale);  // not snapped: on the curve it would be < 1e-9
+    else
+      EXPECT_LT(off, 1e-9 * scale);
+  }
 }
 
 }  // namespace

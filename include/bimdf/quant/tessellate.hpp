@@ -49,6 +49,11 @@ struct Tessellation {
   // (src/mesh/inverted_cleanup.hpp, diagonal_collapse.hpp); the vertices within two rings of
   // each merged one were smoothed and polished again.
   int collapsed_inverted = 0;
+  // Vertices of feature curves (not feature corners, not on the border) that were let off
+  // their curve, to move on the charts of their quads, because that turned an inverted quad
+  // at them right side up (src/mesh/inverted_cleanup.hpp): there the quad mesh leaves the
+  // feature curve. Their origin still names the curve.
+  int released_from_curves = 0;
 };
 
 // Smoothing after stitching (note §4.2): `iterations` rounds in which every free vertex moves
