@@ -4,7 +4,8 @@
 final meshes (../shared/data/layouts/quadwild_quality.tsv). Prints a markdown table, with each
 model's verdict against issue 51's bar: exit 0; a manifold mesh with the input's Euler
 characteristic and no border on a closed input; quads 0.5-2x QuadWild's; singular vertices at
-most 1.25x; mean and 5th-percentile scaled Jacobian at least QuadWild's; no inverted quad.
+most 1.25x; mean and 5th-percentile scaled Jacobian at least QuadWild's; no inverted quad
+(and no flat one).
 
 Usage: bench/standalone_remesh.py [--bimdf build/bin/bimdf] [--data ../shared/data]
        [--only NAME,NAME] [--timeout SECONDS] [--keep DIR]
@@ -91,6 +92,8 @@ def main():
             misses.append("p5")
         if m["inverted"] > 0:
             misses.append("inverted")
+        if m["degenerate"] > 0:  # flat quads are not counted as inverted, nor are they fine
+            misses.append("flat quads")
         verdict = "not: " + ", ".join(misses) if misses else "**met**"
         print(f"| {name} | {j['input']['triangles']} | 0 | {m['faces']} | {q['quads']} | "
               f"{m['faces'] / int(q['quads']):.2f} | {singular} | {q['singular_interior']} | "

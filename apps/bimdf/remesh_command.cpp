@@ -92,7 +92,7 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
          {"pattern_singularities", singular},
          {"removed_doublets", t.removed_doublets},
          {"collapsed_inverted", t.collapsed_inverted},
-         {"released_from_curves", t.released_from_curves},
+         {"released_from_features", t.released_from_features},
          {"charts", per_chart},
          {"time",
           {{"patterns_s", t.time_patterns_s},
@@ -110,9 +110,9 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
     s << "; " << t.removed_doublets << " vertices of valence 2 removed (quads merged)";
   if (t.collapsed_inverted > 0)
     s << "; " << t.collapsed_inverted << " inverted quads collapsed (opposite corners merged)";
-  if (t.released_from_curves > 0)
-    s << "; " << t.released_from_curves
-      << " feature-curve vertices let off their curve (inverted quads there)";
+  if (t.released_from_features > 0)
+    s << "; " << t.released_from_features
+      << " feature vertices let off the features (inverted quads there)";
   s << "\n";
   s << "tessellation  patterns " << ms(t.time_patterns_s) << ", mapping " << ms(t.time_mapping_s)
     << ", smoothing " << ms(t.time_smoothing_s) << ", polish " << ms(t.time_polish_s) << "\n";

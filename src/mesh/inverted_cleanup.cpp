@@ -64,6 +64,15 @@ std::vector<int> inverted_quads(const QuadMesh& mesh) {
   return out;
 }
 
+// Flat quads (corners together, or a scaled Jacobian of exactly 0) are not counted as inverted;
+// a trial that swaps an inverted quad for a flat one is no better (measured: mannequin-devil's
+// tip gave one without this).
+int flat_quads(const QuadMesh& mesh) {
+  int flat = 0;
+  for (const auto& q : mesh.quads) flat += bimdf::detail::degenerate(mesh, q);
+  return flat;
+}
+
 // The worst scaled Jacobian of the quads with a corner among `vertices`.
 double worst_at(const QuadMesh& mesh, const std::vector<int>& vertices) {
   std::vector<char> in(mesh.num_vertices(), 0);
@@ -75,46 +84,55 @@ double worst_at(const QuadMesh& mesh, const std::vector<int>& vertices) {
   return worst;
 }
 
-// Frees vertices of feature curves from their curve where an inverted quad has them as corners:
-// first its own corners, then those of the quads around them; a copy is smoothed and polished
-// as after a collapse and kept if it has fewer inverted quads and a better worst quad around.
-// A feature corner, a border vertex and a vertex already freed stay as they are. Returns how
-// many vertices were freed; `released` marks them (they keep moving freely in later settles).
-int release_from_curves(const Layout& layout, const SmoothingOptions& smoothing, Tessellation& t,
-                        std::vector<char>& released) {
+// Lets vertices of feature curves leave them where an inverted quad has them as corners, on a
+// copy: first the quad's own corners inside curves (not feature corners), then those of the
+// quads around them, then — last resort, for needles at a tip — those quads' feature corners
+// too. The freed vertices move on their quads' charts; the copy is smoothed and polished as
+// after a collapse and kept if it has fewer inverted quads and a better worst quad around.
+// Border vertices and vertices already freed stay as they are. Only inverted quads with a
+// corner marked in `near` are looked at, when it is given. Returns how many vertices were
+// freed; `released` marks them (they keep moving freely in later settles).
+int release_from_features(const Layout& layout, const SmoothingOptions& smoothing, Tessellation& t,
+                          std::vector<char>& released, const std::vector<char>* near = nullptr) {
   std::vector<char> on_curve = bimdf::detail::off_features(layout, t);
   for (char& c : on_curve) c = !c;
   std::vector<char> inner(t.mesh.num_vertices(), 1);
   bimdf::detail::keep_border(t.mesh, inner);
   std::vector<char> feature_corner(layout.mesh.num_vertices(), 0);
   for (int v : layout.feature_corners) feature_corner[v] = 1;
-  const auto may_leave = [&](int v) {
+  const auto may_leave = [&](int v, bool corners_too) {
     const VertexOrigin& o = t.origin[v];
     return on_curve[v] && inner[v] && !released[v] &&
-           (o.subside >= 0 || (o.mesh_vertex >= 0 && !feature_corner[o.mesh_vertex]));
+           (o.subside >= 0 ||
+            (o.mesh_vertex >= 0 && (corners_too || !feature_corner[o.mesh_vertex])));
   };
   const std::vector<std::vector<int>> quads_at = bimdf::detail::quads_at_vertices(t.mesh);
   int freed_in_all = 0;
   for (bool changed = true; changed;) {
     changed = false;
     for (int q : inverted_quads(t.mesh)) {
-      for (int rings = 0; rings < 2; ++rings) {
+      if (near && std::none_of(t.mesh.quads[q].begin(), t.mesh.quads[q].end(),
+                               [&](int v) { return (*near)[v] != 0; }))
+        continue;
+      for (int tier = 0; tier < 3; ++tier) {
         const std::vector<int> now = inverted_quads(t.mesh);
         if (std::find(now.begin(), now.end(), q) == now.end()) break;
         std::vector<int> around(t.mesh.quads[q].begin(), t.mesh.quads[q].end());
-        if (rings == 1)
+        if (tier > 0)
           for (int c : t.mesh.quads[q])
             for (int f : quads_at[c])
               around.insert(around.end(), t.mesh.quads[f].begin(), t.mesh.quads[f].end());
         std::vector<char> trial_released = released;
         std::vector<int> freed;
         for (int v : around)
-          if (may_leave(v) && !trial_released[v]) trial_released[v] = 1, freed.push_back(v);
+          if (may_leave(v, tier == 2) && !trial_released[v])
+            trial_released[v] = 1, freed.push_back(v);
         if (freed.empty()) continue;
         Tessellation trial = t;
         const std::vector<int> region =
             settle_around(layout, smoothing, trial, freed, trial_released);
         if (inverted_quads(trial.mesh).size() < now.size() &&
+            flat_quads(trial.mesh) <= flat_quads(t.mesh) &&
             worst_at(trial.mesh, region) > worst_at(t.mesh, region)) {
           t = std::move(trial);
           released = std::move(trial_released);
@@ -140,6 +158,7 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
   // Trial collapses, one inverted quad at a time; the list is made again after each kept one
   // (the indices shift), and a quad no trial helped is not tried again.
   std::vector<std::array<int, 4>> given_up;
+  std::vector<char> released(t.mesh.num_vertices(), 0);
   for (;;) {
     const std::vector<int> inverted = inverted_quads(t.mesh);
     std::vector<char> may_go = bimdf::detail::off_features(layout, t);
@@ -155,18 +174,31 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
         std::vector<int> renumber;
         if (!bimdf::detail::collapse_diagonal(trial.mesh, q, keep, renumber)) continue;
         bimdf::detail::follow_renumbering(trial, renumber);
+        std::vector<char> trial_released(trial.mesh.num_vertices(), 0);
+        for (int v = 0; v < static_cast<int>(renumber.size()); ++v)
+          if (renumber[v] >= 0 && released[v]) trial_released[renumber[v]] = 1;
         const std::vector<int> region =
-            settle_around(layout, smoothing, trial, {renumber[keep]},
-                          std::vector<char>(trial.mesh.num_vertices(), 0));
+            settle_around(layout, smoothing, trial, {renumber[keep]}, trial_released);
         // Before: the same vertices (but the one that went) in t, the inverted quad included.
         std::vector<char> in_region(trial.mesh.num_vertices(), 0);
         for (int v : region) in_region[v] = 1;
         std::vector<int> old_region;
         for (int v = 0; v < static_cast<int>(renumber.size()); ++v)
           if (renumber[v] >= 0 && in_region[renumber[v]]) old_region.push_back(v);
-        if (inverted_quads(trial.mesh).size() < inverted.size() &&
-            worst_at(trial.mesh, region) > worst_at(t.mesh, old_region)) {
+        const auto better = [&] {
+          return inverted_quads(trial.mesh).size() < inverted.size() &&
+                 flat_quads(trial.mesh) <= flat_quads(t.mesh) &&
+                 worst_at(trial.mesh, region) > worst_at(t.mesh, old_region);
+        };
+        // Where the merge leaves a quad inverted at a feature curve, the curve's vertices
+        // there may have to leave it too.
+        int freed = 0;
+        if (!better())
+          freed = release_from_features(layout, smoothing, trial, trial_released, &in_region);
+        if (better()) {
           t = std::move(trial);
+          released = std::move(trial_released);
+          t.released_from_features += freed;
           ++collapsed;
           kept = true;
           // The quads given up keep their vertices, under their new numbers.
@@ -183,8 +215,7 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
     }
     if (!kept) break;
   }
-  std::vector<char> released(t.mesh.num_vertices(), 0);
-  t.released_from_curves = release_from_curves(layout, smoothing, t, released);
+  t.released_from_features += release_from_features(layout, smoothing, t, released);
   return collapsed;
 }
 

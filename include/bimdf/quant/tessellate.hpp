@@ -49,11 +49,11 @@ struct Tessellation {
   // (src/mesh/inverted_cleanup.hpp, diagonal_collapse.hpp); the vertices within two rings of
   // each merged one were smoothed and polished again.
   int collapsed_inverted = 0;
-  // Vertices of feature curves (not feature corners, not on the border) that were let off
-  // their curve, to move on the charts of their quads, because that turned an inverted quad
-  // at them right side up (src/mesh/inverted_cleanup.hpp): there the quad mesh leaves the
-  // feature curve. Their origin still names the curve.
-  int released_from_curves = 0;
+  // Vertices of feature curves (feature corners last; never border vertices) that were let
+  // off their curve, to move on the charts of their quads, because that turned an inverted
+  // quad at them right side up (src/mesh/inverted_cleanup.hpp): there the quad mesh leaves
+  // the feature. Their origin still names the curve or corner.
+  int released_from_features = 0;
 };
 
 // Smoothing after stitching (note §4.2): `iterations` rounds in which every free vertex moves
@@ -75,6 +75,8 @@ struct Tessellation {
 // 5th-percentile scaled Jacobian; 0: none. Last, where smoothing or polishing ran, each
 // interior vertex of valence 2 off the features (a "doublet", two quads with a corner of about
 // 180° each) is removed and its two quads merged into one, where that raises the worse of them.
+// Before that, quads still inverted are collapsed or have their feature vertices let off the
+// features (src/mesh/inverted_cleanup.hpp): the one place where the mesh may leave a feature.
 struct SmoothingOptions {
   int iterations = 30;
   double damping = 0.5;
