@@ -179,10 +179,23 @@ struct NotCharts : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The cross field and the seamless map depend on the mesh, the features and
+// LayoutOptions::field only — not on the pairing radius, nor on whether the map is traced
+// despite its folds: one generate_layout call computes each once (when first needed) and every
+// radius and retry takes them from here (blade: 7.5 s of field and map per layout).
+struct FieldAndMap {
+  std::optional<CrossField> field;
+  FieldIndices indices;
+  double field_s = 0;
+  std::optional<SeamlessMap> map;
+  double map_s = 0;
+};
+
 // One attempt, tracing as `options` says.
 GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& features,
                                      const LayoutOptions& options, double pairing_radius,
-                                     const std::function<void(const LayoutProgress&)>& progress) {
+                                     const std::function<void(const LayoutProgress&)>& progress,
+                                     FieldAndMap& computed) {
   const auto start = std::chrono::steady_clock::now();
   const auto report = [&](const char* stage, const std::string& detail) {
     if (progress) progress({since(start), stage, detail});
@@ -194,9 +207,14 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   const std::vector<bool> curve = feature_edge_flags(top, features);
 
   auto t = std::chrono::steady_clock::now();
-  const CrossField field = compute_cross_field(mesh, features, options.field);
-  out.indices = field_indices(mesh, field);
-  out.time_field_s = since(t);
+  if (!computed.field) {
+    computed.field = compute_cross_field(mesh, features, options.field);
+    computed.indices = field_indices(mesh, *computed.field);
+    computed.field_s = since(t);
+  }
+  const CrossField& field = *computed.field;
+  out.indices = computed.indices;
+  out.time_field_s = computed.field_s;
   {
     int inside = 0;
     for (const auto& s : out.indices.singularities) inside += !s.on_border;
@@ -208,9 +226,13 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   SeamlessMap map;  // empty unless traced along
   if (options.trace_parametrization) {
     t = std::chrono::steady_clock::now();
-    map = seamless_parametrization(top, frames, field, curve);
+    if (!computed.map) {
+      computed.map = seamless_parametrization(top, frames, field, curve);
+      computed.map_s = since(t);
+    }
+    map = *computed.map;
     out.folded_faces = map.folded_faces;
-    out.time_parametrization_s = since(t);
+    out.time_parametrization_s = computed.map_s;
     std::ostringstream detail;
     detail << map.folded_faces << " folded faces, mean distortion " << map.mean_distortion;
     if (map.folded_faces > options.max_folded_fraction * mesh.num_faces()) {
@@ -389,7 +411,7 @@ std::pair<GeneratedLayout, LayoutVerdict> generate_with_retries(
     const TriangleMesh& mesh, const Features& features, const LayoutOptions& options,
     double pairing_radius, const std::function<void(const LayoutProgress&)>& report,
     const LayoutCheck& check, int& checks, double& earlier_s,
-    std::chrono::steady_clock::time_point start) {
+    std::chrono::steady_clock::time_point start, FieldAndMap& computed) {
   // The two ways of tracing fail in different places (camel: a ring around two adjacent
   // singularities that no seed's trace cuts open): where the first fails, the parametrization
   // is traced despite its folds, then the field's streamlines.
@@ -404,7 +426,7 @@ std::pair<GeneratedLayout, LayoutVerdict> generate_with_retries(
     std::string wrong;
     try {
       GeneratedLayout out =
-          generate_layout_once(mesh, features, attempts[i], pairing_radius, report);
+          generate_layout_once(mesh, features, attempts[i], pairing_radius, report, computed);
       out.attempts = static_cast<int>(i) + 1;
       LayoutVerdict verdict;
       if (check) {
@@ -445,6 +467,7 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
   double best_badness = 0;
   std::exception_ptr first_error;
   int checks = 0, taken = 0;
+  FieldAndMap computed;
   for (size_t k = 0; k < radii; ++k) {
     const double radius = options.pairing_radii[k];
     if (k > 0) {
@@ -456,7 +479,7 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
     }
     try {
       auto [out, verdict] = generate_with_retries(mesh, features, options, radius, report, check,
-                                                  checks, earlier_s, start);
+                                                  checks, earlier_s, start, computed);
       ++taken;
       if (!best || verdict.badness < best_badness)
         best = std::move(out), best_badness = verdict.badness;

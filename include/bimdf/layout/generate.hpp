@@ -104,6 +104,9 @@ struct GeneratedLayout {
   double pairing_radius = 1;  // the one of LayoutOptions::pairing_radii this layout was made with
   int candidates = 1;         // layouts the check took, of which this one rated least bad
   int checked = -1;           // which call of the check (from 0) rated this layout; −1: none
+  // The field and the parametrization are computed once per generate_layout call and shared
+  // by every pairing radius and retry (they do not depend on either): their times are that
+  // one computation's, whichever layout is kept.
   double time_field_s = 0, time_parametrization_s = 0, time_trace_s = 0, time_cut_s = 0,
          time_patches_s = 0;
 };
