@@ -114,6 +114,7 @@ int release_from_features(const Layout& layout, const SmoothingOptions& smoothin
       if (near && std::none_of(t.mesh.quads[q].begin(), t.mesh.quads[q].end(),
                                [&](int v) { return (*near)[v] != 0; }))
         continue;
+      size_t tried = 0;  // vertices freed by the last tier tried (each tier's are a superset)
       for (int tier = 0; tier < 3; ++tier) {
         const std::vector<int> now = inverted_quads(t.mesh);
         if (std::find(now.begin(), now.end(), q) == now.end()) break;
@@ -127,7 +128,8 @@ int release_from_features(const Layout& layout, const SmoothingOptions& smoothin
         for (int v : around)
           if (may_leave(v, tier == 2) && !trial_released[v])
             trial_released[v] = 1, freed.push_back(v);
-        if (freed.empty()) continue;
+        if (freed.size() == tried) continue;  // nothing new to free: the same trial again
+        tried = freed.size();
         Tessellation trial = t;
         const std::vector<int> region =
             settle_around(layout, smoothing, trial, freed, trial_released);
