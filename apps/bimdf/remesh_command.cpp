@@ -93,6 +93,7 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
          {"removed_doublets", t.removed_doublets},
          {"collapsed_inverted", t.collapsed_inverted},
          {"released_from_features", t.released_from_features},
+         {"released_max_offset", t.released_max_offset},
          {"charts", per_chart},
          {"time",
           {{"patterns_s", t.time_patterns_s},
@@ -112,7 +113,8 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
     s << "; " << t.collapsed_inverted << " inverted quads collapsed (opposite corners merged)";
   if (t.released_from_features > 0)
     s << "; " << t.released_from_features
-      << " feature vertices let off the features (inverted quads there)";
+      << " feature vertices let off the features (inverted quads there; at most "
+      << t.released_max_offset << " edge lengths off)";
   s << "\n";
   s << "tessellation  patterns " << ms(t.time_patterns_s) << ", mapping " << ms(t.time_mapping_s)
     << ", smoothing " << ms(t.time_smoothing_s) << ", polish " << ms(t.time_polish_s) << "\n";

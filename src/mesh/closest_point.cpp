@@ -39,6 +39,12 @@ Vec3 barycentric_coordinates(const Vec3& p, const Vec3& a, const Vec3& b, const 
   return w;
 }
 
+Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = sub(b, a);
+  const double length2 = dot(ab, ab);
+  return length2 > 0 ? along(a, std::clamp(dot(sub(p, a), ab) / length2, 0.0, 1.0), ab) : a;
+}
+
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
   const double d1 = dot(ab, ap), d2 = dot(ac, ap);

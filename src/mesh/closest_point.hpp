@@ -13,6 +13,9 @@ namespace bimdf::detail {
 // The point of triangle (a, b, c) closest to p (by Voronoi regions of its vertices and edges).
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
+// The point of segment (a, b) closest to p (a for a segment of length 0).
+Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b);
+
 // The barycentric coordinates of p's projection onto the plane of triangle (a, b, c), each
 // clamped to [0, 1] and renormalized (equal thirds for a degenerate triangle).
 Vec3 barycentric_coordinates(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);

@@ -2,9 +2,11 @@
 #include "mesh/inverted_cleanup.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
+#include "mesh/closest_point.hpp"
 #include "mesh/diagonal_collapse.hpp"
 #include "mesh/quad_cleanup.hpp"
 #include "mesh/quad_quality.hpp"
@@ -218,6 +220,19 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
     if (!kept) break;
   }
   t.released_from_features += release_from_features(layout, smoothing, t, released);
+  // How far the mesh left the features: each freed vertex's distance to the nearest feature
+  // edge, the largest, in average edge lengths.
+  for (int v = 0; v < t.mesh.num_vertices(); ++v) {
+    if (!released[v] || layout.average_edge_length <= 0) continue;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& [a, b] : layout.feature_edges) {
+      const bimdf::detail::Vec3 q = bimdf::detail::closest_point_on_segment(
+          t.mesh.vertices[v], layout.mesh.vertices[a], layout.mesh.vertices[b]);
+      nearest = std::min(nearest, bimdf::detail::norm(bimdf::detail::sub(q, t.mesh.vertices[v])));
+    }
+    if (std::isfinite(nearest))
+      t.released_max_offset = std::max(t.released_max_offset, nearest / layout.average_edge_length);
+  }
   return collapsed;
 }
 

@@ -61,16 +61,10 @@ bimdf::detail::TriangleTree::Hit closest_on_polyline(const Layout& layout,
   bimdf::detail::TriangleTree::Hit best;
   best.distance = -1;
   for (size_t i = 0; i + 1 < chain.size(); ++i) {
-    const auto& a = layout.mesh.vertices[chain[i]];
-    const auto& b = layout.mesh.vertices[chain[i + 1]];
-    double ab2 = 0, t = 0;
-    for (int d = 0; d < 3; ++d)
-      ab2 += (b[d] - a[d]) * (b[d] - a[d]), t += (p[d] - a[d]) * (b[d] - a[d]);
-    t = ab2 > 0 ? std::clamp(t / ab2, 0.0, 1.0) : 0.0;
-    std::array<double, 3> q;
-    double d2 = 0;
-    for (int d = 0; d < 3; ++d)
-      q[d] = a[d] + t * (b[d] - a[d]), d2 += (q[d] - p[d]) * (q[d] - p[d]);
+    const bimdf::detail::Vec3 q = bimdf::detail::closest_point_on_segment(
+        p, layout.mesh.vertices[chain[i]], layout.mesh.vertices[chain[i + 1]]);
+    const bimdf::detail::Vec3 pq = bimdf::detail::sub(q, p);
+    const double d2 = bimdf::detail::dot(pq, pq);
     if (best.distance < 0 || d2 < best.distance) best = {-1, q, d2};
   }
   // A distance, as TriangleTree::closest gives, so that project() compares like with like.

@@ -12,6 +12,7 @@
 #include "bimdf/metrics.hpp"
 #include "bimdf/quant/quantize.hpp"
 #include "bimdf/quant/tessellate.hpp"
+#include "mesh/closest_point.hpp"
 #include "mesh/quad_quality.hpp"
 #include "mesh/smoothing.hpp"
 #include "tmesh_collapse_support.hpp"
@@ -202,6 +203,17 @@ TEST(QualityPolish, AVertexGivenChartsLeavesItsCurve) {
     else
       EXPECT_LT(off, 1e-9 * scale);
   }
+}
+
+// The closest point of a segment: the foot of the perpendicular inside it, an end beyond it,
+// the one point of a segment of length 0.
+TEST(ClosestPoint, OnASegmentTheFootOrAnEnd) {
+  using bimdf::detail::closest_point_on_segment;
+  const bimdf::detail::Vec3 a{0, 0, 0}, b{2, 0, 0};
+  EXPECT_EQ(closest_point_on_segment({0.5, 3, -1}, a, b), (bimdf::detail::Vec3{0.5, 0, 0}));
+  EXPECT_EQ(closest_point_on_segment({-1, 1, 0}, a, b), a);
+  EXPECT_EQ(closest_point_on_segment({5, 0, 2}, a, b), b);
+  EXPECT_EQ(closest_point_on_segment({1, 1, 1}, b, b), b);
 }
 
 }  // namespace

@@ -54,6 +54,9 @@ struct Tessellation {
   // quad at them right side up (src/mesh/inverted_cleanup.hpp): there the quad mesh leaves
   // the feature. Their origin still names the curve or corner.
   int released_from_features = 0;
+  // The farthest any of them ended from the layout's feature edges, in average layout edge
+  // lengths (0 when none was let go).
+  double released_max_offset = 0;
 };
 
 // Smoothing after stitching (note §4.2): `iterations` rounds in which every free vertex moves
