@@ -116,10 +116,11 @@ int release_from_features(const Layout& layout, const SmoothingOptions& smoothin
       if (near && std::none_of(t.mesh.quads[q].begin(), t.mesh.quads[q].end(),
                                [&](int v) { return (*near)[v] != 0; }))
         continue;
+      // `t` changes only when a trial is kept, and then the tiers stop: one list serves them.
+      const std::vector<int> now = inverted_quads(t.mesh);
+      if (std::find(now.begin(), now.end(), q) == now.end()) continue;
       size_t tried = 0;  // vertices freed by the last tier tried (each tier's are a superset)
       for (int tier = 0; tier < 3; ++tier) {
-        const std::vector<int> now = inverted_quads(t.mesh);
-        if (std::find(now.begin(), now.end(), q) == now.end()) break;
         std::vector<int> around(t.mesh.quads[q].begin(), t.mesh.quads[q].end());
         if (tier > 0)
           for (int c : t.mesh.quads[q])
@@ -222,8 +223,8 @@ int remove_inverted_quads(const Layout& layout, const SmoothingOptions& smoothin
   t.released_from_features += release_from_features(layout, smoothing, t, released);
   // How far the mesh left the features: each freed vertex's distance to the nearest feature
   // edge, the largest, in average edge lengths.
-  for (int v = 0; v < t.mesh.num_vertices(); ++v) {
-    if (!released[v] || layout.average_edge_length <= 0) continue;
+  for (int v = 0; v < t.mesh.num_vertices() && layout.average_edge_length > 0; ++v) {
+    if (!released[v]) continue;
     double nearest = std::numeric_limits<double>::infinity();
     for (const auto& [a, b] : layout.feature_edges) {
       const bimdf::detail::Vec3 q = bimdf::detail::closest_point_on_segment(

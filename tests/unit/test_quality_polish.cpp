@@ -101,6 +101,24 @@ double distance_to_polyline(const Layout& layout, const std::vector<int>& chain,
   return best;
 }
 
+// The layout's feature edges, each as (smaller, larger) vertex.
+std::set<std::pair<int, int>> feature_edge_set(const Layout& layout) {
+  std::set<std::pair<int, int>> feature;
+  for (const auto& e : layout.feature_edges)
+    feature.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
+  return feature;
+}
+
+// Whether subside `s` runs along `feature` edges all the way (a border subside does not count:
+// the border is a curve of its own).
+bool along_feature(const std::set<std::pair<int, int>>& feature, const Subside& s) {
+  bool along = !s.on_border();
+  for (size_t i = 0; i + 1 < s.vertices.size() && along; ++i)
+    along = feature.count({std::min(s.vertices[i], s.vertices[i + 1]),
+                           std::max(s.vertices[i], s.vertices[i + 1])}) > 0;
+  return along;
+}
+
 // The bundled bunny (with feature curves and corners), remeshed with and without polishing:
 // polishing raises the mean and 5th percentile, lowers neither the minimum nor raises the
 // Hausdorff distance, adds no inverted or degenerate quad, and keeps feature corners in place
@@ -124,9 +142,7 @@ TEST(QualityPolish, RaisesTheBunnysQualityWithinItsGuarantees) {
   EXPECT_LE(b.inverted, a.inverted);
   EXPECT_EQ(b.degenerate, 0);
 
-  std::set<std::pair<int, int>> feature;
-  for (const auto& e : layout.feature_edges)
-    feature.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
+  const std::set<std::pair<int, int>> feature = feature_edge_set(layout);
   const std::set<int> corners(layout.feature_corners.begin(), layout.feature_corners.end());
   const double scale = layout.average_edge_length;
   int on_curves = 0, at_corners = 0;
@@ -136,14 +152,10 @@ TEST(QualityPolish, RaisesTheBunnysQualityWithinItsGuarantees) {
       EXPECT_EQ(polished.mesh.vertices[v], layout.mesh.vertices[o.mesh_vertex]) << v;
       ++at_corners;
     }
-    if (o.subside < 0) continue;
-    const Subside& s = layout.subsides[o.subside];
-    bool along_feature = !s.on_border();
-    for (size_t i = 0; i + 1 < s.vertices.size() && along_feature; ++i)
-      along_feature = feature.count({std::min(s.vertices[i], s.vertices[i + 1]),
-                                     std::max(s.vertices[i], s.vertices[i + 1])}) > 0;
-    if (!along_feature) continue;
-    EXPECT_LT(distance_to_polyline(layout, s.vertices, polished.mesh.vertices[v]), 1e-9 * scale)
+    if (o.subside < 0 || !along_feature(feature, layout.subsides[o.subside])) continue;
+    EXPECT_LT(distance_to_polyline(layout, layout.subsides[o.subside].vertices,
+                                   polished.mesh.vertices[v]),
+              1e-9 * scale)
         << v;
     ++on_curves;
   }
@@ -160,19 +172,11 @@ TEST(QualityPolish, AVertexGivenChartsLeavesItsCurve) {
       read_quadwild_layout(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj");
   const std::vector<int64_t> lengths = quantize(layout, QuantizeOptions{}).lengths();
   const Tessellation start = tessellate(layout, lengths, SmoothingOptions{});
-  std::set<std::pair<int, int>> feature;
-  for (const auto& e : layout.feature_edges)
-    feature.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
-  const auto along_feature = [&](const Subside& s) {
-    bool along = !s.on_border();
-    for (size_t i = 0; i + 1 < s.vertices.size() && along; ++i)
-      along = feature.count({std::min(s.vertices[i], s.vertices[i + 1]),
-                             std::max(s.vertices[i], s.vertices[i + 1])}) > 0;
-    return along;
-  };
+  const std::set<std::pair<int, int>> feature = feature_edge_set(layout);
   int v = -1;
   for (int u = 0; u < start.mesh.num_vertices() && v < 0; ++u)
-    if (start.origin[u].subside >= 0 && along_feature(layout.subsides[start.origin[u].subside]))
+    if (start.origin[u].subside >= 0 &&
+        along_feature(feature, layout.subsides[start.origin[u].subside]))
       v = u;
   ASSERT_GE(v, 0);
   const std::vector<int>& chain = layout.subsides[start.origin[v].subside].vertices;
