@@ -62,6 +62,12 @@ void add_standalone_options(CLI::App* cmd, StandaloneOptions& o) {
       ->expected(1, 8)
       ->default_str("1,1.25")
       ->check(number_from(0.0, 100.0));
+  cmd->add_option("--cancel-pairs", o.layout.cancel_pair_radius,
+                  "Bare mesh: field singularities of opposite sign (valence 3 and 5) closer than "
+                  "this many average edge lengths, off feature curves, are left out of the "
+                  "parametrization in pairs (0: none)")
+      ->default_val(1.5)
+      ->check(number_from(0.0, 100.0));
   cmd->add_flag("--info", o.info,
                 "Describe the input (bare mesh: components, border loops, genus, features, the "
                 "cross field's singularities) and stop; no -o needed");
@@ -167,6 +173,7 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
                         {"folded_faces", g.folded_faces},
                         {"attempts", g.attempts},
                         {"pairing_radius", g.pairing_radius},
+                        {"cancelled_pairs", g.cancelled_pairs},
                         {"candidates", g.candidates},
                         {"trace_starts", g.trace_starts},
                         {"traces", g.traces},
@@ -180,7 +187,8 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
     << g.removed_traces << " removed), " << g.layout.charts.size() << " patches on "
     << g.layout.mesh.num_faces() << " triangles, traced along the "
     << (g.traced_parametrization ? "parametrization" : "field's streamlines") << " ("
-    << g.folded_faces << " folded faces"
+    << g.folded_faces << " folded faces, " << g.cancelled_pairs
+    << " close singularity pairs left out"
     << (g.attempts > 1 ? "; tracing attempt " + std::to_string(g.attempts) : std::string());
   if (g.candidates > 1)
     s << "; pairing radius " << g.pairing_radius << ", least bad of " << g.candidates;

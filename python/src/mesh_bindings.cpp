@@ -177,6 +177,7 @@ RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
   made["field_singularities"] = singular;
   made["traced_along"] = g->traced_parametrization ? "parametrization" : "field";
   made["folded_faces"] = g->folded_faces;
+  made["cancelled_pairs"] = g->cancelled_pairs;
   made["attempts"] = g->attempts;
   made["pairing_radius"] = g->pairing_radius;
   made["candidates"] = g->candidates;

@@ -316,7 +316,8 @@ CrossField compute_cross_field(const TriangleMesh& mesh, const Features& feature
   return field;
 }
 
-FieldIndices field_indices(const TriangleMesh& mesh, const CrossField& field) {
+FieldIndices field_indices(const TriangleMesh& mesh, const CrossField& field,
+                           const std::vector<int>& matching_offset) {
   const SurfaceTopology top(mesh);
   const FaceFrames frames(mesh);
   const int F = mesh.num_faces(), V = mesh.num_vertices();
@@ -329,6 +330,7 @@ FieldIndices field_indices(const TriangleMesh& mesh, const CrossField& field) {
     const int h = top.edge_half_edge(e), g = top.opposite(h);
     jump[e] = g >= 0 ? cross_difference(theta[g / 3] - theta[h / 3] - transport(top, frames, h))
                      : cross_difference(theta[h / 3] - frames.angle(h / 3, edge_vector(top, h)));
+    if (!matching_offset.empty()) jump[e] += matching_offset[e] * M_PI / 2;
   }
   FieldIndices out;
   out.quarter_index.assign(V, 0);

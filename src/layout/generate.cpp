@@ -17,6 +17,7 @@
 #include "layout/mesh_cutting.hpp"
 #include "layout/patches.hpp"
 #include "layout/seamless.hpp"
+#include "layout/singularity_pairs.hpp"
 #include "layout/surface_topology.hpp"
 #include "layout/trace_selection.hpp"
 #include "layout/tracing.hpp"
@@ -186,6 +187,8 @@ struct NotCharts : std::runtime_error {
 struct FieldAndMap {
   std::optional<CrossField> field;
   FieldIndices indices;
+  CancelledPairs cancelled;        // close pairs, left out of the parametrization
+  FieldIndices cancelled_indices;  // the field's indices without them
   double field_s = 0;
   std::optional<SeamlessMap> map;
   double map_s = 0;
@@ -221,13 +224,23 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
     report("field", std::to_string(inside) + " singularities inside, index sum " +
                         std::to_string(out.indices.quarter_index_sum) + "/4");
   }
+  // The singularities traces start from: the field's, or the map's cones where it is traced.
+  const FieldIndices* singular = &out.indices;
 
   FaceWays ways;
   SeamlessMap map;  // empty unless traced along
   if (options.trace_parametrization) {
     t = std::chrono::steady_clock::now();
     if (!computed.map) {
-      computed.map = seamless_parametrization(top, frames, field, curve);
+      computed.cancelled = cancel_close_pairs(top, computed.indices, vertices_of_edges(top, curve),
+                                              options.cancel_pair_radius * top.mean_edge_length());
+      computed.cancelled_indices =
+          computed.cancelled.pairs.empty()
+              ? computed.indices
+              : field_indices(mesh, field, computed.cancelled.matching_offset);
+      SeamlessOptions seamless;
+      seamless.matching_offset = computed.cancelled.matching_offset;
+      computed.map = seamless_parametrization(top, frames, field, curve, seamless);
       computed.map_s = since(t);
     }
     map = *computed.map;
@@ -241,6 +254,9 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
     } else {
       ways = face_ways(frames, map.iso_direction);
       out.traced_parametrization = true;
+      out.cancelled_pairs = static_cast<int>(computed.cancelled.pairs.size());
+      singular = &computed.cancelled_indices;
+      detail << "; " << out.cancelled_pairs << " close singularity pairs left out";
     }
     report("parametrization", detail.str());
   }
@@ -273,7 +289,7 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
     // to a curve) are not traced, and everything is traced again without them (which may let
     // other separatrices run on), up to `max_ban_rounds` times.
     for (int ban_round = 0;; ++ban_round) {
-      graph = trace_motorcycle_graph(top, frames, ways, out.indices.quarter_index, curve, trace);
+      graph = trace_motorcycle_graph(top, frames, ways, singular->quarter_index, curve, trace);
       if (ban_round == options.max_ban_rounds) break;
       size_t before = trace.banned.size();
       ban_shallow_ends(graph.traces, shallow_deg * M_PI / 180,
@@ -346,12 +362,12 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
       border[e] = true;
       if (top.opposite(top.edge_half_edge(input)) >= 0) sharp_pieces.push_back({a, b});
     }
-    CornerHints hints = corner_hints(cut_top, cut, edge_of, graph.traces, out.indices.quarter_index,
+    CornerHints hints = corner_hints(cut_top, cut, edge_of, graph.traces, singular->quarter_index,
                                      mesh.num_vertices());
     if (!map.gradient.empty()) hints.parameter_quarters = parameter_quarters(cut_top, cut, map);
     patches = label_patches(cut_top, border, hints);
     const std::vector<int> seeds =
-        seeds_for_non_disks(cut_top, patches, mesh.num_vertices(), out.indices.quarter_index);
+        seeds_for_non_disks(cut_top, patches, mesh.num_vertices(), singular->quarter_index);
     if (seeds.empty() || round == options.max_seed_rounds) {
       // What seeds could not cut open (a ring with no regular input vertex in it) is cut
       // across along mesh edges.

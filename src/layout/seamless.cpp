@@ -84,6 +84,7 @@ SeamlessMap seamless_parametrization(const SurfaceTopology& top, const FaceFrame
       const double dy = r[1][0] * ch[0] + r[1][1] * ch[1] - cf[1];
       if (dx * dx + dy * dy < best_d) best_d = dx * dx + dy * dy, best = k;
     }
+    if (!options.matching_offset.empty()) best += options.matching_offset[e];
     Mat2 r = quarter_turns(best);
     for (auto& row : r)
       for (double& v : row) v = -v;

@@ -55,6 +55,10 @@ struct SeamlessOptions {
   // per unit of relative error). Measured on 17 shared models: 3 and 30 gave more singular
   // vertices or lower quality than 10 on most; a hard constraint folded 12 of 23 maps.
   double curve_weight = 10;
+  // Per edge (empty: none): quarter turns added to the matching the field gives across it,
+  // oriented as field_indices takes them (cancel_close_pairs, singularity_pairs.hpp): the map's
+  // cones are then those of field_indices(mesh, field, matching_offset).
+  std::vector<int> matching_offset;
 };
 
 // `curve_edge` per edge of `top` (features and border): (nearly) iso-lines there. The field's faces

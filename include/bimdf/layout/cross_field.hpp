@@ -87,8 +87,13 @@ struct FieldIndices {
   double max_rounding = 0;
 };
 
-// Index of every vertex under `field` (see the header comment).
-FieldIndices field_indices(const TriangleMesh& mesh, const CrossField& field);
+// Index of every vertex under `field` (see the header comment). `matching_offset` (per edge of
+// the mesh's SurfaceTopology, or empty): quarter turns added to the field's jump across each
+// edge, in the orientation of the edge's first half-edge — each counts +1 quarter of index at
+// that half-edge's head and −1 at its tail (layout/singularity_pairs.hpp moves singularities
+// so).
+FieldIndices field_indices(const TriangleMesh& mesh, const CrossField& field,
+                           const std::vector<int>& matching_offset = {});
 
 // QuadWild's `.rosy` text: the face count, `4`, then one direction per face (`x y z`).
 std::string to_rosy(const CrossField& field);

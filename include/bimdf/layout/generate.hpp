@@ -79,6 +79,13 @@ struct LayoutOptions {
   // 1.1 edges (SJ p5 0.637 → 0.819) but left bull an inverted quad, which radius 1 does not.
   // Two radii cost two layouts and remeshes (docs/standalone_remesher.md).
   std::vector<double> pairing_radii = {1, 1.25};
+  // Pairs of opposite field singularities (valence 3 and 5) closer than this many average edge
+  // lengths, neither on a feature curve or the border, are cancelled in the parametrization
+  // (layout/singularity_pairs.hpp): below a quad's size a pair only adds two singular vertices
+  // and the slivers between their separatrices. Measured on the 23 shared models at 1.5
+  // (docs/standalone_remesher.md): camel 255 → 206 singular vertices, ChineseDragon-10kv
+  // 860 → 671, bull 1891 → 1638, no model's SJ mean or p5 below QuadWild's. 0: none.
+  double cancel_pair_radius = 1.5;
 };
 
 // One progress report (LayoutOptions' caller decides what to show): a stage has just ended.
@@ -91,6 +98,9 @@ struct LayoutProgress {
 struct GeneratedLayout {
   quant::Layout layout;    // on the cut mesh; average_edge_length is the input mesh's
   FieldIndices indices;    // the field's singularities, on the input mesh
+  // Close pairs of them the parametrization left out (LayoutOptions::cancel_pair_radius; 0
+  // where the field's streamlines were traced): the layout's singularities are the others.
+  int cancelled_pairs = 0;
   int trace_starts = 0;    // vertices separatrices start from
   int traces = 0;          // kept
   int removed_traces = 0;  // unfinished, or ending on one that was removed
