@@ -208,6 +208,7 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   const SurfaceTopology top(mesh);
   const FaceFrames frames(mesh);
   const std::vector<bool> curve = feature_edge_flags(top, features);
+  const std::vector<bool> curve_vertex = vertices_of_edges(top, curve);
 
   auto t = std::chrono::steady_clock::now();
   if (!computed.field) {
@@ -232,7 +233,7 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   if (options.trace_parametrization) {
     t = std::chrono::steady_clock::now();
     if (!computed.map) {
-      computed.cancelled = cancel_close_pairs(top, computed.indices, vertices_of_edges(top, curve),
+      computed.cancelled = cancel_close_pairs(top, computed.indices, curve_vertex,
                                               options.cancel_pair_radius * top.mean_edge_length());
       computed.cancelled_indices =
           computed.cancelled.pairs.empty()
@@ -270,7 +271,6 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   const double shallow_deg =
       out.traced_parametrization ? options.shallow_angle_deg : options.streamline_shallow_angle_deg;
 
-  const std::vector<bool> curve_vertex = vertices_of_edges(top, curve);
   const double short_length = options.short_to_curve_edges * top.mean_edge_length();
   TraceOptions trace;
   trace.snap = snap;
