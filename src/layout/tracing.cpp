@@ -13,6 +13,9 @@ namespace {
 using detail::Vec3;
 constexpr double kQuarter = M_PI / 2;
 constexpr double kMaxSteer = M_PI / 6;  // Tracer::steer
+// A seed's trace pairs with another seed only if it passes that seed at most this far to the
+// side per length it has gone (within about 37° ahead; Tracer::observe).
+constexpr double kSeedsSideways = 0.75;
 
 // The angle between two lines (not directions): 0 to π/2.
 double line_angle(const Vec3& a, const Vec3& b) {
@@ -695,10 +698,22 @@ bool Tracer::observe(const Walker& w, int f, const Vec3& p, const Vec3& q) {
     if (quarter_index_[x] == 0 && !is_seed_[x]) continue;
     const double t = std::clamp(detail::dot(detail::sub(m_.vertices[x], p), d) / len2, 0.0, 1.0);
     const Vec3 closest = detail::along(p, t, d);
-    if (detail::norm(detail::sub(m_.vertices[x], closest)) > approach_radius_) continue;
+    const double lateral = detail::norm(detail::sub(m_.vertices[x], closest));
+    if (lateral > approach_radius_) continue;
+    // Two seeds side by side (on couplingdown the two seeds of a hole's wall are often
+    // neighbours) are not head on: paired, the trace would step sideways onto the other seed
+    // and the cut across the patch would be a Z whose two corners become a valence-3/5 pair of
+    // the quad mesh. Traced apart, each cuts straight across (couplingdown: 176 → 116
+    // singular vertices). A seed already behind the piece's start was passed sideways. Only
+    // between seeds: applied to singularities as well, the rule cost ChineseDragon-10kv an
+    // inverted quad.
+    const double along = w.length + t * std::sqrt(len2);
+    if (is_seed_[x] && is_seed_[own] && x != own &&
+        (lateral > kSeedsSideways * along || (t == 0 && w.length > 0)))
+      continue;
     for (size_t j = 0; j < leave_vectors_[x].size(); ++j)
       if (detail::dot(dir, leave_vectors_[x][j]) < -0.85) {
-        approach_ = {x, static_cast<int>(j), w.length + t * std::sqrt(len2)};
+        approach_ = {x, static_cast<int>(j), along};
         return true;
       }
   }

@@ -19,7 +19,8 @@
 //
 // Pairing: separatrices that run into another singularity head on are traced once, from one
 // to the other; if that trace stops before it gets there, the other singularity's separatrix
-// it stood for is traced after all (no singularity loses a separatrix).
+// it stood for is traced after all (no singularity loses a separatrix). Seeds pair the same
+// way, but not with a seed beside them (passed more to the side than ahead).
 #pragma once
 
 #include <array>

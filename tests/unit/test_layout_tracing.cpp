@@ -99,6 +99,50 @@ TEST(LayoutTracing, APairedTraceSteersOntoItsPartnersSeparatrix) {
   EXPECT_LT(steered, 15);
 }
 
+// Seeds (regular vertices traced all four ways) `a` and `b` on the 8×8 square, its ways at
+// `angle` to x. Returns how far sideways a trace ends from the line its first step took, the
+// largest (0 when every trace is straight), and how many traces end at the other seed.
+std::pair<double, int> sideways_and_joined(int a, int b, double angle) {
+  const TriangleMesh m = test::square(8, 8);
+  const layout::SurfaceTopology top(m);
+  const layout::FaceFrames frames(m);
+  std::vector<int> index(m.num_vertices(), 0);
+  for (int v : {vertex(0, 0), vertex(0, 8), vertex(8, 0), vertex(8, 8)}) index[v] = 1;
+  layout::TraceOptions options;
+  options.seeds = {a, b};
+  options.approach_radius = 1.2;  // farther than the neighbouring seed
+  const layout::MotorcycleGraph g = layout::trace_motorcycle_graph(
+      top, frames, uniform_ways(m, frames, angle), index, border_edges(top), options);
+  double worst = 0;
+  int joined = 0;
+  for (const Trace& t : g.traces) {
+    const SurfacePoint& last = t.points.back();
+    const int other = t.start_vertex == a ? b : a;
+    joined += last.kind == SurfacePoint::Kind::Vertex && last.id == other;
+    const detail::Vec3 start = layout::position(top, t.points.front());
+    const detail::Vec3 first =
+        detail::normalized(detail::sub(layout::position(top, t.points[1]), start));
+    const detail::Vec3 whole = detail::sub(layout::position(top, last), start);
+    const double ahead = detail::dot(whole, first);
+    worst = std::max(worst, std::sqrt(std::max(0.0, detail::dot(whole, whole) - ahead * ahead)));
+  }
+  return {worst, joined};
+}
+
+TEST(LayoutTracing, SeedsSideBySideAreNotJoined) {
+  // With the ways at 40°, the seed at (5, 4) lies 0.64 to the side of the way from (4, 4)
+  // and 0.77 ahead, within the approach radius: joined, that trace would step sideways onto
+  // it — a Z cut with two corners. Each seed cuts straight across instead.
+  const auto [beside, beside_joined] =
+      sideways_and_joined(vertex(4, 4), vertex(5, 4), 40 * M_PI / 180);
+  EXPECT_LT(beside, 1e-6);
+  EXPECT_EQ(beside_joined, 0);
+  // Head on (each on the other's way along x), seeds are still one trace.
+  const auto [apart, apart_joined] = sideways_and_joined(vertex(2, 4), vertex(6, 4), 0);
+  EXPECT_LT(apart, 1e-9);
+  EXPECT_EQ(apart_joined, 1);
+}
+
 Trace ending(int start, int way, int ways, Trace::End end, double length) {
   Trace t;
   t.start_vertex = start;
