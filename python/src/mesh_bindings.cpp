@@ -131,13 +131,17 @@ struct RemeshInput {
 };
 
 RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
-                                     const std::vector<double>& pairing_radii, double cancel_pairs,
+                                     const std::vector<double>& pairing_radii,
+                                     const std::vector<double>& spare_radii, double cancel_pairs,
                                      const layout::LayoutCheck& check) {
   if (!(sharp_angle >= 0 && sharp_angle <= 180))
     throw py::value_error("sharp_angle must be in [0, 180]");
   if (pairing_radii.empty() || !std::all_of(pairing_radii.begin(), pairing_radii.end(),
                                             [](double r) { return r >= 0 && r <= 100; }))
     throw py::value_error("pairing_radii must be a non-empty list of numbers in [0, 100]");
+  if (!std::all_of(spare_radii.begin(), spare_radii.end(),
+                   [](double r) { return r >= 0 && r <= 100; }))
+    throw py::value_error("spare_radii must be a list of numbers in [0, 100]");
   if (!(cancel_pairs >= 0 && cancel_pairs <= 100))
     throw py::value_error("cancel_pairs must be in [0, 100]");
   PolygonMesh bare;
@@ -170,6 +174,7 @@ RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
     sharp_edges = static_cast<int>(features.sharp_edges.size());
     layout::LayoutOptions options;
     options.pairing_radii = pairing_radii;
+    options.spare_pairing_radii = spare_radii;
     options.cancel_pair_radius = cancel_pairs;
     g = layout::generate_layout(surface.mesh, features, options, {}, check);
   }
@@ -183,6 +188,7 @@ RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
   made["cancelled_pairs"] = g->cancelled_pairs;
   made["attempts"] = g->attempts;
   made["pairing_radius"] = g->pairing_radius;
+  made["spare"] = g->spare;
   made["candidates"] = g->candidates;
   made["patches"] = g->layout.charts.size();
   made["time"] = py::dict(
@@ -258,7 +264,8 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
                  std::optional<int64_t> target_faces, bool align, int smooth_iterations,
                  double smooth_damping, int quality_rounds, int threads,
                  std::optional<double> time_limit, double sharp_angle,
-                 const std::vector<double>& pairing_radii, double cancel_pairs) {
+                 const std::vector<double>& pairing_radii, const std::vector<double>& spare_radii,
+                 double cancel_pairs) {
   const auto start = std::chrono::steady_clock::now();
   quant::QuantizeOptions options =
       quantize_options(scale, edge_length, target_faces, align, threads, time_limit);
@@ -273,8 +280,8 @@ py::tuple remesh(py::handle layout_arg, double scale, std::optional<double> edge
     return layout::LayoutVerdict{results.back().topology_difference,
                                  quant::layout_badness(results.back())};
   };
-  RemeshInput input =
-      remesh_input_from_python(layout_arg, sharp_angle, pairing_radii, cancel_pairs, quad_mesh_of);
+  RemeshInput input = remesh_input_from_python(layout_arg, sharp_angle, pairing_radii, spare_radii,
+                                               cancel_pairs, quad_mesh_of);
   const quant::Layout& layout = input.layout;
   if (!input.made) {
     std::string wrong;
@@ -452,12 +459,13 @@ void bind_mesh(py::module_& m) {
         py::arg("align") = true, py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
         py::arg("quality_rounds") = 30, py::arg("threads") = 1, py::arg("time_limit") = py::none(),
         py::arg("sharp_angle") = 35.0, py::arg("pairing_radii") = std::vector<double>{1, 1.25},
-        py::arg("cancel_pairs") = 1.5,
+        py::arg("spare_radii") = std::vector<double>{1}, py::arg("cancel_pairs") = 1.5,
         "Remeshes as `bimdf remesh` does: a QuadWild layout (a path to NAME.obj with NAME.patch "
         "beside it, or a tuple (V, F, patch, corners)) is quantized and tessellated; a bare "
         "triangle or polygon mesh (a path to .obj/.off/.ply without NAME.patch, or a tuple "
         "(V, F)) first gets its own cross field and layout (features above sharp_angle "
-        "degrees, one layout per pairing radius and the least bad kept, as --pairing-radii; close "
+        "degrees, one layout per pairing radius and the least bad kept, as --pairing-radii, and "
+        "one with fewer lines per spare radius, as --spare-radii; close "
         "pairs of opposite singularities left out of the parametrization, as --cancel-pairs; the "
         "report's 'layout' says how it was made). Returns (V, F, report): "
         "vertices float64 (n, 3), quads int64 (m, 4), the report dict.");

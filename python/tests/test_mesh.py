@@ -84,7 +84,7 @@ def test_remesh_of_a_bare_mesh_equals_the_cli(tmp_path):
         assert report["quads"] == len(F) == cli_report["metrics"]["faces"]
         assert_same_numbers(report["metrics"], cli_report["metrics"])
         for key in ("traced_along", "folded_faces", "attempts", "patches", "pairing_radius",
-                    "candidates", "cancelled_pairs"):
+                    "candidates", "spare", "cancelled_pairs"):
             assert report["layout"][key] == cli_report["layout"][key], key
         assert report["layout"]["field_singularities"] == cli_report["field"]["singularities"]
         assert report["layout"]["sharp_edges"] == cli_report["input"]["sharp_edges"]
@@ -101,6 +101,8 @@ def test_remesh_of_a_bare_mesh_refuses_a_non_manifold_one():
         bimdf.remesh((V, F), sharp_angle=200)
     with pytest.raises(ValueError, match="pairing_radii must be a non-empty list"):
         bimdf.remesh((V, F), pairing_radii=[])
+    with pytest.raises(ValueError, match=r"spare_radii must be a list of numbers in \[0, 100\]"):
+        bimdf.remesh((V, F), spare_radii=[-1])
     with pytest.raises(ValueError, match=r"cancel_pairs must be in \[0, 100\]"):
         bimdf.remesh((V, F), cancel_pairs=-1)
 

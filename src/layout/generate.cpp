@@ -194,9 +194,10 @@ struct FieldAndMap {
   double map_s = 0;
 };
 
-// One attempt, tracing as `options` says.
+// One attempt, tracing as `options` says (with fewer lines where `spare`).
 GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& features,
                                      const LayoutOptions& options, double pairing_radius,
+                                     bool spare,
                                      const std::function<void(const LayoutProgress&)>& progress,
                                      FieldAndMap& computed) {
   const auto start = std::chrono::steady_clock::now();
@@ -205,6 +206,7 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
   };
   GeneratedLayout out;
   out.pairing_radius = pairing_radius;
+  out.spare = spare;
   const SurfaceTopology top(mesh);
   const FaceFrames frames(mesh);
   const std::vector<bool> curve = feature_edge_flags(top, features);
@@ -272,6 +274,8 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
       out.traced_parametrization ? options.shallow_angle_deg : options.streamline_shallow_angle_deg;
 
   const double short_length = options.short_to_curve_edges * top.mean_edge_length();
+  const std::vector<double> to_curve =
+      spare ? distance_to_curves(top, curve_vertex) : std::vector<double>{};
   TraceOptions trace;
   trace.snap = snap;
   trace.max_length = options.max_trace_length;
@@ -297,6 +301,10 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
                        trace.seeds, trace.banned);
       ban_short_to_curve(graph.traces, curve_vertex, trace.seeds, short_length, trace.banned);
       ban_seed_loops(graph.traces, curve_vertex, trace.seeds, short_length, trace.banned);
+      if (spare)
+        ban_along_curves(top, graph.traces, to_curve, trace.seeds,
+                         options.beside_curve_edges * top.mean_edge_length(),
+                         options.beside_curve_length_edges * top.mean_edge_length(), trace.banned);
       if (trace.banned.size() == before) break;
     }
     out.banned_traces = static_cast<int>(trace.banned.size());
@@ -365,6 +373,7 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
     CornerHints hints = corner_hints(cut_top, cut, edge_of, graph.traces, singular->quarter_index,
                                      mesh.num_vertices());
     if (!map.gradient.empty()) hints.parameter_quarters = parameter_quarters(cut_top, cut, map);
+    if (spare) hints.flat_share = options.flat_sector_quarters;
     patches = label_patches(cut_top, border, hints);
     const std::vector<int> seeds =
         seeds_for_non_disks(cut_top, patches, mesh.num_vertices(), singular->quarter_index);
@@ -425,7 +434,7 @@ GeneratedLayout generate_layout_once(const TriangleMesh& mesh, const Features& f
 // One pairing radius: the ways of tracing in turn until one gives a layout the check takes.
 std::pair<GeneratedLayout, LayoutVerdict> generate_with_retries(
     const TriangleMesh& mesh, const Features& features, const LayoutOptions& options,
-    double pairing_radius, const std::function<void(const LayoutProgress&)>& report,
+    double pairing_radius, bool spare, const std::function<void(const LayoutProgress&)>& report,
     const LayoutCheck& check, int& checks, double& earlier_s,
     std::chrono::steady_clock::time_point start, FieldAndMap& computed) {
   // The two ways of tracing fail in different places (camel: a ring around two adjacent
@@ -441,8 +450,8 @@ std::pair<GeneratedLayout, LayoutVerdict> generate_with_retries(
   for (size_t i = 0;; ++i) {
     std::string wrong;
     try {
-      GeneratedLayout out =
-          generate_layout_once(mesh, features, attempts[i], pairing_radius, report, computed);
+      GeneratedLayout out = generate_layout_once(mesh, features, attempts[i], pairing_radius, spare,
+                                                 report, computed);
       out.attempts = static_cast<int>(i) + 1;
       LayoutVerdict verdict;
       if (check) {
@@ -468,34 +477,44 @@ GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& featur
                                 const LayoutOptions& options,
                                 const std::function<void(const LayoutProgress&)>& progress,
                                 const LayoutCheck& check) {
-  if (options.pairing_radii.empty() ||
-      !std::all_of(options.pairing_radii.begin(), options.pairing_radii.end(),
-                   [](double r) { return r >= 0 && std::isfinite(r); }))
+  const auto valid = [](const std::vector<double>& radii) {
+    return std::all_of(radii.begin(), radii.end(),
+                       [](double r) { return r >= 0 && std::isfinite(r); });
+  };
+  if (options.pairing_radii.empty() || !valid(options.pairing_radii))
     throw std::invalid_argument(
         "layout: pairing radii must be a non-empty list of finite values >= 0");
+  if (!valid(options.spare_pairing_radii))
+    throw std::invalid_argument("layout: spare pairing radii must be finite values >= 0");
   const auto start = std::chrono::steady_clock::now();
   double earlier_s = 0;  // spent on earlier layouts
   const auto report = [&](const LayoutProgress& p) {
     if (progress) progress({earlier_s + p.elapsed_s, p.stage, p.detail});
   };
-  const size_t radii = check ? options.pairing_radii.size() : 1;
+  // (pairing radius, spare) per layout to make: without a check, only the first.
+  std::vector<std::pair<double, bool>> candidates;
+  for (double r : options.pairing_radii) candidates.push_back({r, false});
+  if (check)
+    for (double r : options.spare_pairing_radii) candidates.push_back({r, true});
+  else
+    candidates.resize(1);
   std::optional<GeneratedLayout> best;
   double best_badness = 0;
   std::exception_ptr first_error;
   int checks = 0, taken = 0;
   FieldAndMap computed;
-  for (size_t k = 0; k < radii; ++k) {
-    const double radius = options.pairing_radii[k];
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const auto [radius, spare] = candidates[k];
     if (k > 0) {
       earlier_s = since(start);
       std::ostringstream detail;
-      detail << "tracing again with pairing radius " << radius << " (" << k + 1 << " of " << radii
-             << ")";
+      detail << "tracing again with pairing radius " << radius << (spare ? ", fewer lines" : "")
+             << " (" << k + 1 << " of " << candidates.size() << ")";
       report({0, "pairing", detail.str()});
     }
     try {
-      auto [out, verdict] = generate_with_retries(mesh, features, options, radius, report, check,
-                                                  checks, earlier_s, start, computed);
+      auto [out, verdict] = generate_with_retries(mesh, features, options, radius, spare, report,
+                                                  check, checks, earlier_s, start, computed);
       ++taken;
       if (!best || verdict.badness < best_badness)
         best = std::move(out), best_badness = verdict.badness;

@@ -106,6 +106,12 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
       double quarters = hints.parameter_quarters.empty() || sec.folded
                             ? sec.angle / total[v] * hints.field_quarters[v]
                             : sec.parameter_quarters;
+      // A sector the map reads as a corner where the surface is flat (CornerHints::flat_share).
+      if (hints.flat_share > 0 && !hints.parameter_quarters.empty() && !sec.folded &&
+          !top.on_border(v) && quarters < 1.5) {
+        const double share = sec.angle / total[v] * hints.field_quarters[v];
+        if (share > hints.flat_share) quarters = share;
+      }
       const int end = hints.ending_edge[v];
       if (end >= 0) quarters = end == sec.edge_out || end == sec.edge_in ? 1 : 2;
       by_turn.push_back({quarters, v});

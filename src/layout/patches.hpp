@@ -33,6 +33,10 @@ struct CornerHints {
   // sum, which is exact where traces are iso-lines, instead of its share of the field's turns
   // (still used for a sector with a face folded or flat in the parameter plane, angle ≤ 0).
   std::vector<double> parameter_quarters;
+  // Where > 0 (with parameter_quarters): an inner vertex's sector the map reads below 1.5
+  // quarters, though its share of the field's turns is above this, is no corner — the map bends
+  // there (near a cone, round a small hole), the surface does not. 0: the map decides.
+  double flat_share = 0;
 };
 
 // Floods faces across every edge that is not a boundary (`boundary_edge` per edge of `top`:

@@ -2,8 +2,14 @@
 #include "layout/trace_selection.hpp"
 
 #include <algorithm>
+#include <functional>
+#include <limits>
 #include <map>
+#include <queue>
 #include <set>
+
+#include "layout/surface_point.hpp"
+#include "mesh/vec3.hpp"
 
 namespace bimdf::layout {
 namespace {
@@ -103,6 +109,63 @@ void ban_seed_loops(const std::vector<Trace>& traces, const std::vector<bool>& c
         break;
       }
     }
+}
+
+std::vector<double> distance_to_curves(const SurfaceTopology& top,
+                                       const std::vector<bool>& curve_vertex) {
+  const TriangleMesh& m = top.mesh();
+  std::vector<double> dist(m.num_vertices(), std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (int v = 0; v < m.num_vertices(); ++v)
+    if (curve_vertex[v]) dist[v] = 0, queue.push({0.0, v});
+  while (!queue.empty()) {
+    const auto [du, u] = queue.top();
+    queue.pop();
+    if (du > dist[u]) continue;
+    for (int h : top.outgoing(u)) {
+      const int w = top.to(h);
+      const double d = du + detail::norm(detail::sub(m.vertices[u], m.vertices[w]));
+      if (d < dist[w]) dist[w] = d, queue.push({d, w});
+    }
+  }
+  return dist;
+}
+
+namespace {
+
+// A point's distance to the curves, interpolated from its edge's or face's vertices.
+double distance_at(const SurfaceTopology& top, const SurfacePoint& p,
+                   const std::vector<double>& to_curve) {
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex:
+      return to_curve[p.id];
+    case SurfacePoint::Kind::Edge: {
+      const int h = top.edge_half_edge(p.id);
+      return (1 - p.t) * to_curve[top.from(h)] + p.t * to_curve[top.to(h)];
+    }
+    default: {
+      const auto& f = top.mesh().faces[p.id];
+      return p.bary[0] * to_curve[f[0]] + p.bary[1] * to_curve[f[1]] + p.bary[2] * to_curve[f[2]];
+    }
+  }
+}
+
+}  // namespace
+
+void ban_along_curves(const SurfaceTopology& top, const std::vector<Trace>& traces,
+                      const std::vector<double>& to_curve, const std::vector<int>& seeds,
+                      double near, double along, std::vector<std::array<int, 2>>& banned) {
+  for (const Trace& t : traces) {
+    if (is_seed(seeds, t.start_vertex)) continue;
+    double beside = 0;
+    for (size_t i = 1; i < t.points.size(); ++i)
+      if (distance_at(top, t.points[i - 1], to_curve) < near &&
+          distance_at(top, t.points[i], to_curve) < near)
+        beside +=
+            detail::norm(detail::sub(position(top, t.points[i]), position(top, t.points[i - 1])));
+    if (beside > along) banned.push_back({t.start_vertex, t.start_way});
+  }
 }
 
 }  // namespace bimdf::layout

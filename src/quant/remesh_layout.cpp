@@ -24,7 +24,7 @@ RemeshedLayout remesh_layout(const Layout& layout, const QuantizeOptions& quanti
 
 double layout_badness(const RemeshedLayout& remeshed) {
   const QuadMeshMetrics& m = remeshed.metrics;
-  return m.inverted + (2 - m.scaled_jacobian_mean - m.scaled_jacobian_p5) / 5;
+  return m.inverted + m.degenerate + (2 - m.scaled_jacobian_mean - m.scaled_jacobian_p5) / 5;
 }
 
 }  // namespace bimdf::quant

@@ -35,7 +35,8 @@ TEST_F(StandaloneCli, CubeBecomesSixRegularGridsWithItsEightCorners) {
   EXPECT_EQ(j["layout"]["patches"], 6);
   EXPECT_EQ(j["layout"]["traced_along"], "parametrization");  // exact on flat faces: no fold
   EXPECT_EQ(j["layout"]["folded_faces"], 0);
-  EXPECT_EQ(j["layout"]["candidates"], 2);  // one layout per default pairing radius, 1 and 1.25
+  // One layout per default pairing radius, 1 and 1.25, and one with fewer lines at radius 1.
+  EXPECT_EQ(j["layout"]["candidates"], 3);
   EXPECT_EQ(j["field"]["singularities"], 8);
   const auto& m = j["metrics"];
   EXPECT_EQ(m["manifold"], true);
@@ -50,14 +51,31 @@ TEST_F(StandaloneCli, CubeBecomesSixRegularGridsWithItsEightCorners) {
     EXPECT_TRUE(j["time"].contains(stage)) << stage;
 }
 
-TEST_F(StandaloneCli, OnePairingRadiusMakesOneLayout) {
+TEST_F(StandaloneCli, OnePairingRadiusAndNoSpareOneMakeOneLayout) {
   const std::string cube = write("cube.obj", obj_text(test::cube(6)));
-  const auto r = run("remesh " + cube + " -o " + path("out.obj") + " --json --pairing-radii 0.5");
+  const auto r =
+      run("remesh " + cube + " -o " + path("out.obj") + " --json --pairing-radii 0.5 --no-spare");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["layout"]["candidates"], 1);
   EXPECT_EQ(j["layout"]["pairing_radius"], 0.5);
+  EXPECT_EQ(j["layout"]["spare"], false);
   EXPECT_EQ(j["metrics"]["singular_vertices"], 8);
+  const auto spare = run("remesh " + cube + " -o " + path("spare.obj") +
+                         " --json --pairing-radii 0.5 --spare-radii 1,2");
+  ASSERT_EQ(spare.exit_code, 0) << spare.err;
+  EXPECT_EQ(nlohmann::json::parse(spare.out)["layout"]["candidates"], 3);
+  const auto both =
+      run("remesh " + cube + " -o " + path("both.obj") + " --no-spare --spare-radii 1");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_EQ(both.err,
+            "error: --spare-radii excludes --no-spare\n"
+            "Run 'bimdf remesh --help' for the options.\n");
+  const auto bad_spare = run("remesh " + cube + " -o " + path("bad.obj") + " --spare-radii x");
+  EXPECT_EQ(bad_spare.exit_code, 2);
+  EXPECT_EQ(bad_spare.err,
+            "error: --spare-radii: expected a number from 0 to 100, got x\n"
+            "Run 'bimdf remesh --help' for the options.\n");
   const auto bad = run("remesh " + cube + " -o " + path("bad.obj") + " --pairing-radii 1,-2");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_EQ(bad.err,

@@ -91,6 +91,7 @@ TEST(LayoutGenerate, ALayoutTheCallerRejectsIsTracedAnotherWay) {
   };
   layout::LayoutOptions one_radius;
   one_radius.pairing_radii = {1};
+  one_radius.spare_pairing_radii.clear();
   const layout::GeneratedLayout g =
       layout::generate_layout(sphere, f, one_radius, progress, [&](const quant::Layout&) {
         return layout::LayoutVerdict{++checked == 1 ? "a pillow" : ""};
@@ -112,7 +113,8 @@ TEST(LayoutGenerate, ALayoutTheCallerRejectsIsTracedAnotherWay) {
   }
   EXPECT_EQ(checked, 3);
   EXPECT_EQ(retries.size(), 2u);
-  // With two radii, every layout of both rejected: the first radius's error.
+  // With the default radii (two, and one traced with fewer lines), every layout of all three
+  // rejected: the first radius's error.
   checked = 0;
   try {
     layout::generate_layout(sphere, f, {}, {}, [&](const quant::Layout&) {
@@ -122,10 +124,11 @@ TEST(LayoutGenerate, ALayoutTheCallerRejectsIsTracedAnotherWay) {
   } catch (const std::runtime_error& e) {
     EXPECT_STREQ(e.what(), "no way of tracing gave a layout that passes: pillow 3");
   }
-  EXPECT_EQ(checked, 6);
+  EXPECT_EQ(checked, 9);
 }
 
-// With a check, one layout per pairing radius; the least bad is kept, the first of equals.
+// With a check, one layout per pairing radius, then one per spare radius traced with fewer
+// lines; the least bad is kept, the first of equals.
 TEST(LayoutGenerate, OfTheLayoutsOfEachPairingRadiusTheLeastBadIsKept) {
   const TriangleMesh sphere = test::icosphere(3);
   const layout::Features f = layout::detect_features(sphere, {});
@@ -133,19 +136,28 @@ TEST(LayoutGenerate, OfTheLayoutsOfEachPairingRadiusTheLeastBadIsKept) {
   const auto progress = [&](const layout::LayoutProgress& p) {
     if (p.stage == "pairing") pairing.push_back(p.detail);
   };
-  std::vector<double> badness{1, 0.5};
+  std::vector<double> badness{1, 0.5, 0.75};
   int calls = 0;
   const auto rate = [&](const quant::Layout&) {
     return layout::LayoutVerdict{"", badness[calls++]};
   };
   const layout::GeneratedLayout g = layout::generate_layout(sphere, f, {}, progress, rate);
   expect_valid(sphere, g);
-  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(calls, 3);
   EXPECT_EQ(g.checked, 1);
   EXPECT_EQ(g.pairing_radius, 1.25);
-  EXPECT_EQ(g.candidates, 2);
-  EXPECT_EQ(pairing, std::vector<std::string>{"tracing again with pairing radius 1.25 (2 of 2)"});
-  badness = {0.5, 0.5};
+  EXPECT_FALSE(g.spare);
+  EXPECT_EQ(g.candidates, 3);
+  EXPECT_EQ(pairing, (std::vector<std::string>{
+                         "tracing again with pairing radius 1.25 (2 of 3)",
+                         "tracing again with pairing radius 1, fewer lines (3 of 3)"}));
+  badness = {1, 0.9, 0.5};
+  calls = 0;
+  const layout::GeneratedLayout spare = layout::generate_layout(sphere, f, {}, {}, rate);
+  EXPECT_EQ(spare.checked, 2);
+  EXPECT_EQ(spare.pairing_radius, 1);
+  EXPECT_TRUE(spare.spare);
+  badness = {0.5, 0.5, 0.5};
   calls = 0;
   const layout::GeneratedLayout first = layout::generate_layout(sphere, f, {}, {}, rate);
   EXPECT_EQ(first.checked, 0);
@@ -158,6 +170,9 @@ TEST(LayoutGenerate, OfTheLayoutsOfEachPairingRadiusTheLeastBadIsKept) {
   layout::LayoutOptions none;
   none.pairing_radii.clear();
   EXPECT_THROW(layout::generate_layout(sphere, f, none), std::invalid_argument);
+  layout::LayoutOptions bad_spare;
+  bad_spare.spare_pairing_radii = {-1};
+  EXPECT_THROW(layout::generate_layout(sphere, f, bad_spare), std::invalid_argument);
 }
 
 TEST(LayoutGenerate, CylinderAndTorusAreCutOpenBySeeds) {

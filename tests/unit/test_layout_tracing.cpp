@@ -223,6 +223,46 @@ TEST(LayoutTraceSelection, ASeedThatCutsAcrossLosesItsLoop) {
   EXPECT_EQ(banned, expected);
 }
 
+// A trace along the points (i, j) of the 8×8 grid, from its first to its last vertex.
+Trace through(int way, const std::vector<std::array<int, 2>>& ij) {
+  Trace t;
+  t.start_vertex = vertex(ij[0][0], ij[0][1]);
+  t.start_way = way;
+  t.start_ways = 4;
+  t.end = Trace::End::Curve;
+  for (const auto& [i, j] : ij) t.points.push_back(SurfacePoint::at_vertex(vertex(i, j)));
+  t.length = static_cast<double>(ij.size() - 1);
+  return t;
+}
+
+TEST(LayoutTraceSelection, ATraceAlongACurveCloseByIsBannedOneAcrossIsNot) {
+  const TriangleMesh m = test::square(8, 8);
+  const layout::SurfaceTopology top(m);
+  std::vector<bool> on_curve(m.num_vertices(), false);
+  for (int i = 0; i <= 8; ++i) on_curve[vertex(i, 0)] = true;  // the bottom side alone
+  const std::vector<double> to_curve = layout::distance_to_curves(top, on_curve);
+  EXPECT_DOUBLE_EQ(to_curve[vertex(3, 0)], 0);
+  EXPECT_DOUBLE_EQ(to_curve[vertex(3, 1)], 1);
+  EXPECT_DOUBLE_EQ(to_curve[vertex(5, 7)], 7);
+  const std::vector<Trace> traces = {
+      // 1 from the curve, 6 along it: a band one edge wide.
+      through(0, {{1, 1}, {2, 1}, {3, 1}, {4, 1}, {5, 1}, {6, 1}, {7, 1}}),
+      // 3 from it, as long: wide enough.
+      through(1, {{1, 3}, {2, 3}, {3, 3}, {4, 3}, {5, 3}, {6, 3}, {7, 3}}),
+      // Straight down onto it from 6 away: near it over its last stretch only.
+      through(2, {{4, 6}, {4, 5}, {4, 4}, {4, 3}, {4, 2}, {4, 1}, {4, 0}}),
+      // A seed's, 1 from the curve: seeds are left alone.
+      through(3, {{2, 1}, {3, 1}, {4, 1}, {5, 1}, {6, 1}, {7, 1}})};
+  std::vector<std::array<int, 2>> banned;
+  layout::ban_along_curves(top, traces, to_curve, {vertex(2, 1)}, 1.5, 3, banned);
+  EXPECT_EQ(banned, (std::vector<std::array<int, 2>>{{vertex(1, 1), 0}}));
+  // Closer than 3.5 for longer than 4.5, no seeds: all but the one down (near for 3).
+  banned.clear();
+  layout::ban_along_curves(top, traces, to_curve, {}, 3.5, 4.5, banned);
+  EXPECT_EQ(banned, (std::vector<std::array<int, 2>>{
+                        {vertex(1, 1), 0}, {vertex(1, 3), 1}, {vertex(2, 1), 3}}));
+}
+
 TEST(LayoutTraceSelection, TracesEndingOnADroppedTraceAreDroppedToo) {
   std::vector<Trace> traces = {
       ending(0, 0, 4, Trace::End::Unfinished, 1), ending(1, 0, 4, Trace::End::Trace, 1),
@@ -256,6 +296,21 @@ std::pair<layout::Patches, int> cut_until_disks(const layout::SurfaceTopology& t
   return {patches, cuts};
 }
 
+// Corner hints for a square grid: the field turns 4 quarters inside, 2 on the border, 1 at the
+// square's `corners`; no trace ends anywhere; parameter_quarters sized, for the test to fill.
+layout::CornerHints square_hints(const layout::SurfaceTopology& top,
+                                 const std::vector<int>& corners) {
+  const int V = top.mesh().num_vertices();
+  layout::CornerHints hints;
+  hints.field_quarters.assign(V, 4);
+  for (int v = 0; v < V; ++v)
+    if (top.on_border(v)) hints.field_quarters[v] = 2;
+  for (int v : corners) hints.field_quarters[v] = 1;
+  hints.ending_edge.assign(V, -1);
+  hints.parameter_quarters.resize(3 * top.mesh().num_faces());
+  return hints;
+}
+
 TEST(LayoutPatches, WhereTheMapFoldsCornersComeFromTheFieldsTurns) {
   // The square [0, 1]² as one patch; the parameter angles are the true ones but at the middle
   // of its bottom side, where the map is made to fold: a negative angle there must not make a
@@ -264,13 +319,7 @@ TEST(LayoutPatches, WhereTheMapFoldsCornersComeFromTheFieldsTurns) {
   const layout::SurfaceTopology top(m);
   std::vector<bool> border(top.num_edges());
   for (int e = 0; e < top.num_edges(); ++e) border[e] = top.opposite(top.edge_half_edge(e)) < 0;
-  layout::CornerHints hints;
-  hints.field_quarters.assign(m.num_vertices(), 4);
-  for (int v = 0; v < m.num_vertices(); ++v)
-    if (top.on_border(v)) hints.field_quarters[v] = 2;
-  for (int v : {0, 2, 6, 8}) hints.field_quarters[v] = 1;  // the square's corners
-  hints.ending_edge.assign(m.num_vertices(), -1);
-  hints.parameter_quarters.resize(3 * m.num_faces());
+  layout::CornerHints hints = square_hints(top, {0, 2, 6, 8});
   for (int h = 0; h < 3 * m.num_faces(); ++h)
     hints.parameter_quarters[h] = top.from(h) == 3 ? -0.1 : top.corner_angle(h) / (M_PI / 2);
   const layout::Patches patches = layout::label_patches(top, border, hints);
@@ -279,6 +328,41 @@ TEST(LayoutPatches, WhereTheMapFoldsCornersComeFromTheFieldsTurns) {
   std::sort(corners.begin(), corners.end());
   EXPECT_EQ(corners, (std::vector<int>{0, 2, 6, 8}));
   EXPECT_EQ(patches.problem[0], "");
+}
+
+TEST(LayoutPatches, WhereTheSurfaceIsFlatAMapsCornerCanBeOverruled) {
+  // The square [0, 4]² cut in two by the line through its middle vertices (i = 2). The map's
+  // angles are the true ones but at the line's middle vertex on one side, where it reads 1.3
+  // quarters (a map bending round a cone near by): a corner there — five for that patch —
+  // unless CornerHints::flat_share overrules it, the sector's share of the field's turns (2)
+  // being above it.
+  const TriangleMesh m = test::square(4, 4);
+  const layout::SurfaceTopology top(m);
+  const auto on_line = [](int v) { return v / 5 == 2; };
+  const int middle = 2 * 5 + 2;
+  std::vector<bool> boundary(top.num_edges());
+  for (int e = 0; e < top.num_edges(); ++e) {
+    const int h = top.edge_half_edge(e);
+    boundary[e] = top.opposite(h) < 0 || (on_line(top.from(h)) && on_line(top.to(h)));
+  }
+  layout::CornerHints hints = square_hints(top, {0, 4, 20, 24});
+  for (int h = 0; h < 3 * m.num_faces(); ++h) {
+    const auto& f = m.faces[h / 3];
+    const bool low_side = f[0] / 5 + f[1] / 5 + f[2] / 5 < 6;  // the faces with i < 2
+    hints.parameter_quarters[h] =
+        top.corner_angle(h) / (M_PI / 2) * (top.from(h) == middle && low_side ? 0.65 : 1);
+  }
+  const auto corners_at_middle = [&](double flat_share) {
+    hints.flat_share = flat_share;
+    const layout::Patches patches = layout::label_patches(top, boundary, hints);
+    EXPECT_EQ(patches.corners.size(), 2u);
+    int n = 0;
+    for (const auto& c : patches.corners) n += std::count(c.begin(), c.end(), middle);
+    return n;
+  };
+  EXPECT_EQ(corners_at_middle(0), 1);
+  EXPECT_EQ(corners_at_middle(1.9), 0);
+  EXPECT_EQ(corners_at_middle(2.1), 1);  // the share, 2, is not above it
 }
 
 TEST(LayoutPatches, AnAnnulusIsCutAcrossIntoDisks) {

@@ -79,6 +79,21 @@ struct LayoutOptions {
   // 1.1 edges (SJ p5 0.637 → 0.819) but left bull an inverted quad, which radius 1 does not.
   // Two radii cost two layouts and remeshes (docs/standalone_remesher.md).
   std::vector<double> pairing_radii = {1, 1.25};
+  // With a check, one more layout per radius here, traced with fewer lines, and kept where the
+  // check rates it less bad than the others: no separatrix that runs alongside a curve, closer
+  // than `beside_curve_edges` average edge lengths over more than `beside_curve_length_edges`
+  // (trace_selection.hpp: ban_along_curves), and no patch corner where the map reads one but
+  // the surface is flat, the sector's share of the field's turns above `flat_sector_quarters`
+  // (patches.hpp: CornerHints::flat_share). Both cut slivers off CAD parts (couplingdown: a
+  // separatrix 2 edges from the rim split off a band that a bolt hole squeezed, 405 of the
+  // mesh's 529 worst quads; corners beside the small holes on straight borders); on organic
+  // models they cost quality (cactus SJ p5 0.927 → 0.679 with them alone), so they are a
+  // candidate, not the rule. Empty: none. Measured on the 23 shared models
+  // (docs/standalone_remesher.md).
+  std::vector<double> spare_pairing_radii = {1};
+  double beside_curve_edges = 4;
+  double beside_curve_length_edges = 10;
+  double flat_sector_quarters = 1.9;
   // Pairs of opposite field singularities (valence 3 and 5) closer than this many average edge
   // lengths, neither on a feature curve or the border, are cancelled in the parametrization
   // (layout/singularity_pairs.hpp): below a quad's size a pair only adds two singular vertices
@@ -112,6 +127,7 @@ struct GeneratedLayout {
   bool traced_parametrization = false;  // false: the field's streamlines were traced
   int attempts = 1;  // tracings tried (LayoutOptions::try_other_ways), the last one kept
   double pairing_radius = 1;  // the one of LayoutOptions::pairing_radii this layout was made with
+  bool spare = false;         // traced with fewer lines (LayoutOptions::spare_pairing_radii)
   int candidates = 1;         // layouts the check took, of which this one rated least bad
   int checked = -1;           // which call of the check (from 0) rated this layout; −1: none
   // The field and the parametrization are computed once per generate_layout call and shared
@@ -133,12 +149,12 @@ using LayoutCheck = std::function<LayoutVerdict(const quant::Layout&)>;
 // features_from_edges on it), trying the other ways of tracing where the first leaves a patch
 // that cannot be a chart or `check` rejects its layout (LayoutOptions::try_other_ways;
 // progress then reports a "retry" stage). With a check, does so once per pairing radius
-// (LayoutOptions::pairing_radii; progress reports a "pairing" stage before each after the
-// first) and returns the layout taken with the least badness, the first of equals; the caller
-// finds what its check computed for it by GeneratedLayout::checked. Throws std::runtime_error
-// when a patch still cannot be a chart (not a disk, or fewer than 3 boundary vertices),
-// naming it, or when `check` rejects the last way's layout too, with its reason — for the
-// first radius, if no radius gives a layout.
+// (LayoutOptions::pairing_radii, then spare_pairing_radii traced with fewer lines; progress
+// reports a "pairing" stage before each after the first) and returns the layout taken with the
+// least badness, the first of equals; the caller finds what its check computed for it by
+// GeneratedLayout::checked. Throws std::runtime_error when a patch still cannot be a chart (not a
+// disk, or fewer than 3 boundary vertices), naming it, or when `check` rejects the last way's
+// layout too, with its reason — for the first radius, if no radius gives a layout.
 GeneratedLayout generate_layout(const TriangleMesh& mesh, const Features& features,
                                 const LayoutOptions& options,
                                 const std::function<void(const LayoutProgress&)>& progress = {},

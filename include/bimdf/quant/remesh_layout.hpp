@@ -30,9 +30,10 @@ struct RemeshedLayout {
 using RemeshProgress = std::function<void(const std::string& stage, const std::string& detail)>;
 
 // How bad a remeshed layout is, for choosing among layouts of one surface
-// (layout::LayoutOptions::pairing_radii): inverted quads first, then the mean and 5th
-// percentile of the scaled Jacobian — inverted + (2 − mean − p5) / 5, so one inverted quad
-// outweighs any difference in the two.
+// (layout::LayoutOptions::pairing_radii): inverted and flat quads first, then the mean and 5th
+// percentile of the scaled Jacobian — inverted + flat + (2 − mean − p5) / 5, so one inverted
+// or flat quad outweighs any difference in the two (a flat quad is as unusable as an inverted
+// one, and smoothing cannot tell them apart by the mean and p5).
 double layout_badness(const RemeshedLayout& remeshed);
 
 // Throws what quantize and tessellate throw.
