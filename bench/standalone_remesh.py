@@ -72,6 +72,8 @@ def main():
         traced = f"{layout.get('traced_along', '')} ({layout.get('folded_faces', '')} folded)"
         if layout.get("candidates", 1) > 1:
             traced += f", pairing radius {layout.get('pairing_radius')}"
+            if layout.get("spare"):
+                traced += ", fewer lines"
         tess = sum(t.get(k, 0) for k in ("patterns_s", "mapping_s", "smoothing_s", "polish_s"))
         closed_in = j["input"]["border_loops"] == 0
         topology = []
