@@ -8,8 +8,9 @@
 // Jacobian* of a quad is the minimum over its four corners of sin of the corner angle, signed
 // by the quad's own (Newell) normal: 1 for a rectangle, 0 for a degenerate corner, negative
 // for a concave or folded one. A quad is *degenerate* when that value is exactly 0 (zero area,
-// or a corner of exactly 180°) or two of its corners are closer than 10⁻⁶ of its longest edge
-// (its angles are then rounding noise); otherwise it is *inverted* when the value is negative.
+// or a corner of exactly 180°), two of its corners are closer than 10⁻⁶ of its longest edge, or
+// its four corners lie on one line (Newell normal below 10⁻⁹ of the sum of its squared edges;
+// its angles are then rounding noise); otherwise it is *inverted* when the value is negative.
 // The *base complex*
 // is the partition of the faces by the boundary and the separatrices — the edge chains traced
 // straight (through valence-4 vertices) from every singular vertex until they reach the
@@ -39,7 +40,8 @@ struct QuadMeshMetrics {
 
   double scaled_jacobian_min = 0, scaled_jacobian_mean = 0, scaled_jacobian_p5 = 0;
   int inverted = 0;            // non-degenerate faces with a negative scaled Jacobian
-  int degenerate = 0;          // faces with a scaled Jacobian of exactly 0 or corners ~coincident
+  int degenerate =
+      0;  // faces with a scaled Jacobian of exactly 0, corners ~coincident or ~collinear
   int base_complex_faces = 0;  // patches of the base complex
 
   // Against a reference surface (−1 / 0 when none was given).

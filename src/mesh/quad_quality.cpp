@@ -89,7 +89,13 @@ QuadShape quad_shape(const QuadMesh& mesh, const std::array<int, 4>& q, const Ve
 }
 
 bool degenerate(const QuadMesh& mesh, const std::array<int, 4>& q) {
-  return corner_spread(mesh, q) < kDegenerateSpread || scaled_jacobian(mesh, q) == 0;
+  double squared_edges = 0;
+  for (int a = 0; a < 4; ++a) {
+    const Vec3 e = sub(mesh.vertices[q[(a + 1) % 4]], mesh.vertices[q[a]]);
+    squared_edges += dot(e, e);
+  }
+  return corner_spread(mesh, q) < kDegenerateSpread || scaled_jacobian(mesh, q) == 0 ||
+         norm(newell_normal(mesh, q)) < kDegenerateArea * squared_edges;
 }
 
 }  // namespace bimdf::detail

@@ -37,8 +37,13 @@ QuadShape quad_shape(const QuadMesh& mesh, const std::array<int, 4>& quad,
                      const std::array<double, 3>& normal);
 
 // Degenerate (metrics.hpp): a scaled Jacobian of exactly 0, or two corners closer than
-// kDegenerateSpread of the longest edge — at that ratio the corner angles are rounding noise.
+// kDegenerateSpread of the longest edge, or a Newell normal shorter than kDegenerateArea times
+// the sum of the squared edges (a square: 1/2) — all four corners on one line, as a quad
+// squeezed along a feature curve (eight's remesh had one, its edges 2·10⁻⁵–2·10⁻⁴ long on one
+// line, that passed as a scaled Jacobian of ±10⁻¹⁵). There the corner angles are rounding
+// noise.
 constexpr double kDegenerateSpread = 1e-6;
+constexpr double kDegenerateArea = 1e-9;
 bool degenerate(const QuadMesh& mesh, const std::array<int, 4>& quad);
 
 }  // namespace bimdf::detail

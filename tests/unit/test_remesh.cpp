@@ -411,6 +411,14 @@ TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
   collapsed.vertices[0] = {1 + 1e-4, 1e-4, 0};
   EXPECT_EQ(measure_quad_mesh(collapsed).degenerate, 0);
   EXPECT_EQ(measure_quad_mesh(collapsed).inverted, 1);
+  // Four corners apart but on one line, up to 10⁻¹³ (a quad squeezed along a feature curve):
+  // its scaled Jacobian is ±rounding noise, yet it has no area — degenerate.
+  QuadMesh line;
+  line.vertices = {{0, 0, 0}, {1, 0, 0}, {1.4, 1e-13, 0}, {0.2, -1e-13, 0}};
+  line.quads = {{0, 1, 2, 3}};
+  line.quad_patch = {0};
+  EXPECT_EQ(measure_quad_mesh(line).degenerate, 1);
+  EXPECT_EQ(measure_quad_mesh(line).inverted, 0);
   QuadMesh bad = grid();
   bad.quads.push_back({0, 1, 4, 3});
   EXPECT_EQ(measure_quad_mesh(bad).non_manifold_edges, 4);
