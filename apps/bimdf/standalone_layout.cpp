@@ -56,8 +56,9 @@ void add_standalone_options(CLI::App* cmd, StandaloneOptions& o) {
   cmd->add_option("--pairing-radii", o.layout.pairing_radii,
                   "Bare mesh: a separatrix passing this close to another singularity (in average "
                   "edge lengths) is traced into it; one layout per radius, the one whose quad mesh "
-                  "is least bad (inverted quads, then scaled Jacobian mean and 5th percentile) is "
-                  "kept. One radius takes half the time")
+                  "is least bad (inverted and flat quads, then scaled Jacobian mean and 5th "
+                  "percentile) is kept (with the one of --spare-radii). Each radius is a layout "
+                  "and a remesh more")
       ->delimiter(',')
       ->expected(1, 8)
       ->default_str("1,1.25")
