@@ -73,8 +73,9 @@ void add_standalone_options(CLI::App* cmd, StandaloneOptions& o) {
           ->expected(1, 8)
           ->default_str("1")
           ->check(number_from(0.0, 100.0));
-  cmd->add_flag("--no-spare", o.no_spare,
-                "Bare mesh: no layout with fewer lines (--spare-radii): about a third less time")
+  cmd->add_flag_callback(
+         "--no-spare", [&o] { o.layout.spare_pairing_radii.clear(); },
+         "Bare mesh: no layout with fewer lines (--spare-radii): about a third less time")
       ->excludes(spare);
   cmd->add_option("--cancel-pairs", o.layout.cancel_pair_radius,
                   "Bare mesh: field singularities of opposite sign (valence 3 and 5) closer than "
@@ -150,12 +151,10 @@ StandaloneLayout build_standalone_layout(const std::string& mesh_path, const Sta
       << " unused vertices dropped, " << r.split_vertices << " pinched vertices split\n";
   out.time["read_s"] = read_s;
 
-  layout::LayoutOptions layout_options = o.layout;
-  if (o.no_spare) layout_options.spare_pairing_radii.clear();
   layout::GeneratedLayout g;
   try {
     g = layout::generate_layout(
-        surface.mesh, features, layout_options,
+        surface.mesh, features, o.layout,
         [&](const layout::LayoutProgress& p) {
           if (o.progress) print_stage(read_s + p.elapsed_s, p.stage, p.detail);
         },

@@ -19,7 +19,6 @@ struct StandaloneOptions {
   std::string layout_out;    // --layout-out NAME.obj: the layout as QuadWild's files
   bool info = false;         // --info: describe the input and stop
   bool progress = false;     // --progress: a line per stage on stderr
-  bool no_spare = false;     // --no-spare: layout.spare_pairing_radii left empty
   layout::LayoutOptions layout;
 };
 

@@ -136,11 +136,12 @@ RemeshInput remesh_input_from_python(py::handle arg, double sharp_angle,
                                      const layout::LayoutCheck& check) {
   if (!(sharp_angle >= 0 && sharp_angle <= 180))
     throw py::value_error("sharp_angle must be in [0, 180]");
-  if (pairing_radii.empty() || !std::all_of(pairing_radii.begin(), pairing_radii.end(),
-                                            [](double r) { return r >= 0 && r <= 100; }))
+  const auto radii_in_range = [](const std::vector<double>& radii) {
+    return std::all_of(radii.begin(), radii.end(), [](double r) { return r >= 0 && r <= 100; });
+  };
+  if (pairing_radii.empty() || !radii_in_range(pairing_radii))
     throw py::value_error("pairing_radii must be a non-empty list of numbers in [0, 100]");
-  if (!std::all_of(spare_radii.begin(), spare_radii.end(),
-                   [](double r) { return r >= 0 && r <= 100; }))
+  if (!radii_in_range(spare_radii))
     throw py::value_error("spare_radii must be a list of numbers in [0, 100]");
   if (!(cancel_pairs >= 0 && cancel_pairs <= 100))
     throw py::value_error("cancel_pairs must be in [0, 100]");

@@ -103,15 +103,13 @@ Patches label_patches(const SurfaceTopology& top, const std::vector<bool>& bound
     std::vector<std::pair<double, int>> by_turn;  // the sector in quarter turns, vertex
     for (const auto& [v, sec] : sector[p]) {
       // Where the map folds, its angles mean nothing: the sector's share of the field's turns.
-      double quarters = hints.parameter_quarters.empty() || sec.folded
-                            ? sec.angle / total[v] * hints.field_quarters[v]
-                            : sec.parameter_quarters;
+      const double share = sec.angle / total[v] * hints.field_quarters[v];
+      double quarters =
+          hints.parameter_quarters.empty() || sec.folded ? share : sec.parameter_quarters;
       // A sector the map reads as a corner where the surface is flat (CornerHints::flat_share).
       if (hints.flat_share > 0 && !hints.parameter_quarters.empty() && !sec.folded &&
-          !top.on_border(v) && quarters < 1.5) {
-        const double share = sec.angle / total[v] * hints.field_quarters[v];
-        if (share > hints.flat_share) quarters = share;
-      }
+          !top.on_border(v) && quarters < 1.5 && share > hints.flat_share)
+        quarters = share;
       const int end = hints.ending_edge[v];
       if (end >= 0) quarters = end == sec.edge_out || end == sec.edge_in ? 1 : 2;
       by_turn.push_back({quarters, v});
