@@ -12,6 +12,7 @@
 #include "bimdf/metrics.hpp"
 #include "bimdf/quant/remesh_layout.hpp"
 #include "bimdf/quant/tessellate.hpp"
+#include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "number_checks.hpp"
 
 namespace bimdf::cli {
@@ -29,6 +30,9 @@ void add_mesh_output(CLI::App* cmd, RemeshCommandOptions& o, bool required = tru
   auto* out = cmd->add_option("-o,--output", o.mesh_out,
                               "The quad mesh OBJ to write (one group per patch)");
   if (required) out->required();
+  cmd->add_option("--feature-out", o.feature_out,
+                  "Also write the quad mesh's edges along the layout's feature curves, as "
+                  "`bimdf requantize --feature` reads them (a count, then `face,edge` lines)");
   cmd->add_flag("--json", o.quantize.out.json, "Print the report as JSON on stdout");
   cmd->add_option("--report", o.quantize.out.file, "Also write the report JSON to this file");
   cmd->add_flag("-v,--verbose", o.verbose, "Per-chart pattern details");
@@ -128,8 +132,16 @@ TessellationReport report_tessellation(const quant::Tessellation& t, const std::
   return r;
 }
 
-void write_mesh(const quant::Tessellation& t, const RemeshCommandOptions& o,
-                const std::vector<std::string>& inputs) {
+void write_mesh(const quant::Layout& layout, const quant::Tessellation& t,
+                const RemeshCommandOptions& o, const std::vector<std::string>& inputs) {
+  // The feature file first: if it may not be written, neither is the mesh.
+  if (!o.feature_out.empty()) {
+    if (o.feature_out == o.mesh_out)
+      throw UsageError{"--feature-out and --output name the same file " + o.mesh_out};
+    std::ostringstream features;
+    tmesh::write_quad_feature_file(features, t.mesh, quant::feature_edges_of(layout, t));
+    write_output_file(o.feature_out, features.str(), inputs);
+  }
   std::ostringstream obj;
   write_obj(obj, t.mesh, "bimdf quad mesh from " + o.quantize.layout);
   write_output_file(o.mesh_out, obj.str(), inputs);
@@ -369,7 +381,7 @@ int run_remesh(const RemeshCommandOptions& o) {
   const double read_s = ready_s.at(chosen);
   const quant::Tessellation& t = r.tessellation;
   write_quantization_model(r.quantization, o.quantize);
-  write_mesh(t, o, {o.quantize.layout});
+  write_mesh(layout, t, o, {o.quantize.layout});
   const QuantizationReport qr =
       report_quantization(layout, r.quantization, o.quantize, read_s, read_s + r.quantize_s);
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
@@ -404,7 +416,7 @@ int run_tessellate(const RemeshCommandOptions& o) {
   } catch (const std::invalid_argument& e) {
     throw InputError(o.quantization, "/subside_lengths", e.what());
   }
-  write_mesh(t, o, {o.quantize.layout, o.quantization});
+  write_mesh(layout, t, o, {o.quantize.layout, o.quantization});
   TessellationReport tr = report_tessellation(t, o.mesh_out, o.verbose);
   const QuadMeshMetrics metrics = measure_quad_mesh(t.mesh, &layout.mesh);
   TessellationReport mr = report_metrics(metrics);

@@ -17,6 +17,7 @@ struct RemeshCommandOptions {
   QuantizeCommandOptions quantize;  // layout, quantization options, --json / report file
   std::string quantization;         // tessellate: the QUANT.json of `bimdf quantize`
   std::string mesh_out;             // -o OUT.obj
+  std::string feature_out;          // --feature-out: the mesh's feature edges (face,edge)
   quant::SmoothingOptions smoothing;
   std::string compare;  // --compare OTHER.obj: its metrics beside the output's
   bool verbose = false;

@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "mesh/feature_subsides.hpp"
 #include "mesh/quad_adjacency.hpp"
 
 namespace bimdf::quant {
@@ -59,17 +60,7 @@ SurfaceSmoother::Setup::Setup(const Layout& layout, Tessellation& t,
     : layout(layout), t(t) {
   const QuadMesh& mesh = t.mesh;
   const int nv = mesh.num_vertices();
-  std::set<std::pair<int, int>> feature;
-  for (const auto& e : layout.feature_edges)
-    feature.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
-  const auto on_feature = [&](const Subside& s) {
-    if (feature.empty()) return false;
-    for (size_t i = 0; i + 1 < s.vertices.size(); ++i)
-      if (!feature.count({std::min(s.vertices[i], s.vertices[i + 1]),
-                          std::max(s.vertices[i], s.vertices[i + 1])}))
-        return false;
-    return true;
-  };
+  const std::vector<char> on_feature = feature_subsides(layout);
   // Border and feature subsides are curves their vertices slide along; so are the joints
   // where two of them continue each other (curve_polylines[s] is subside s's polyline, the
   // joints' follow).
@@ -79,7 +70,7 @@ SurfaceSmoother::Setup::Setup(const Layout& layout, Tessellation& t,
   std::vector<std::vector<int>> curves_ending_at(layout.mesh.num_vertices());
   for (int s = 0; s < num_subsides; ++s) {
     const Subside& sub = layout.subsides[s];
-    subside_free[s] = !sub.on_border() && !on_feature(sub);
+    subside_free[s] = !sub.on_border() && !on_feature[s];
     curve_polylines[s] = sub.vertices;
     if (subside_free[s]) continue;
     curves_ending_at[sub.vertices.front()].push_back(s);

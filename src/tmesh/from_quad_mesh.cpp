@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -333,6 +334,25 @@ std::vector<std::array<int, 2>> read_quad_feature_file(const std::string& path,
   if (!rest.text.empty())
     in.fail(rest.line, "unexpected " + text::quote(rest.text) + " after the last feature edge");
   return edges;
+}
+
+void write_quad_feature_file(std::ostream& out, const QuadMesh& mesh,
+                             const std::vector<std::array<int, 2>>& edges) {
+  std::map<std::pair<int, int>, std::pair<int, int>> first;  // edge → (quad, edge index)
+  for (int f = 0; f < mesh.num_quads(); ++f)
+    for (int k = 0; k < 4; ++k) {
+      const int a = mesh.quads[f][k], b = mesh.quads[f][(k + 1) % 4];
+      first.emplace(std::pair{std::min(a, b), std::max(a, b)}, std::pair{f, k});
+    }
+  std::string text = std::to_string(edges.size()) + "\n";
+  for (const auto& [a, b] : edges) {
+    const auto it = first.find({std::min(a, b), std::max(a, b)});
+    if (it == first.end())
+      throw std::invalid_argument("write_quad_feature_file: vertices " + std::to_string(a) +
+                                  " and " + std::to_string(b) + " are not an edge of the mesh");
+    text += std::to_string(it->second.first) + "," + std::to_string(it->second.second) + "\n";
+  }
+  out << text;
 }
 
 }  // namespace bimdf::tmesh

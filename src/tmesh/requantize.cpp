@@ -253,7 +253,14 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
             collapse_and_tessellate(tm, cut_incidence, r.quantization.arc_length,
                                     on_mesh ? mesh : nullptr, options.quantize.relaxed, zips);
       } catch (const CollapseError& e) {
-        if (!r.half_arc) throw;
+        if (!r.half_arc) {
+          if (!add_collapse_failure_bounds(tm, r.quantization.arc_length, e.patches(),
+                                           quantize.extra_constraints))
+            throw;
+          ++r.repair_rounds;
+          report("repair", std::string(e.what()) + ": a zero element there bounded");
+          continue;
+        }
         // Drift the zips cannot close (two T-mesh vertices zipped into an interior vertex of two
         // quads, say): hold the two-gons there to the arc quantization and solve again.
         if (const std::vector<int> two_gons = unaligned(e.patches(), false); !two_gons.empty()) {

@@ -108,6 +108,37 @@ bool add_separation_bounds(const TMesh& tm, const TMeshIncidence& incidence,
   return added;
 }
 
+bool add_collapse_failure_bounds(const TMesh& tm, const std::vector<int64_t>& length,
+                                 const std::vector<int>& patches, MinOneConstraints& bounds) {
+  int best_arc = -1;
+  SideRef best_side{-1, -1};
+  double best_target = -1;
+  for (int p : patches) {
+    if (p < 0 || p >= tm.num_patches()) continue;
+    for (int pair = 0; pair < 2; ++pair) {
+      const SideRef side{p, pair};
+      if (side_length(tm, p, pair, length) != 0 ||
+          std::find(bounds.sides.begin(), bounds.sides.end(), side) != bounds.sides.end())
+        continue;
+      double target = 0;
+      for (int h : tm.patch_sides[p][pair]) target += tm.arc_target[TMesh::arc_of(h)];
+      if (target > best_target) best_target = target, best_side = side, best_arc = -1;
+    }
+    for (const auto& sides : tm.patch_sides[p])
+      for (int h : sides) {
+        const int a = TMesh::arc_of(h);
+        if (length[a] != 0 ||
+            std::find(bounds.arcs.begin(), bounds.arcs.end(), a) != bounds.arcs.end())
+          continue;
+        if (tm.arc_target[a] > best_target)
+          best_target = tm.arc_target[a], best_arc = a, best_side = {-1, -1};
+      }
+  }
+  if (best_arc >= 0) return bound_arc(best_arc, bounds);
+  if (best_side[0] >= 0) return bound_side(best_side, bounds);
+  return false;
+}
+
 bool add_valence_bounds(const TMesh& tm, const std::vector<int64_t>& length,
                         const CollapsedMesh& collapsed, MinOneConstraints& bounds) {
   const std::vector<char> seed = seeds(tm);

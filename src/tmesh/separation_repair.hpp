@@ -37,6 +37,16 @@ bool add_separation_bounds(const TMesh& tmesh, const TMeshIncidence& incidence,
 bool add_valence_bounds(const TMesh& tmesh, const std::vector<int64_t>& length,
                         const CollapsedMesh& collapsed, MinOneConstraints& bounds);
 
+// A collapse that failed (CollapseError naming `patches`: two quads folded onto each other, a
+// vertex left inside with two quads, a non-manifold vertex): camel's coarse layout with its own
+// feature curves merges four T-mesh vertices into an interior vertex of two quads, which no
+// non-zero path forbids. Bounds, among the zero elements of those patches — zero arcs along
+// their sides, zero side pairs — the one with the longest target not bounded yet, so that the
+// repair undoes as little coarsening as it can; each round bounds one more. Returns whether any
+// was added (false: nothing there is zero, the failure is not a collapse's to undo).
+bool add_collapse_failure_bounds(const TMesh& tmesh, const std::vector<int64_t>& length,
+                                 const std::vector<int>& patches, MinOneConstraints& bounds);
+
 // Border loops shorter than 3 (a loop of two edges reads as no hole at all, its two edges
 // joining the same vertices; the curve paths keep only each piece between seeds ≥ 1, so a loop
 // with fewer than three seeds can shrink to 2): every zero arc of such a loop gets a min-one

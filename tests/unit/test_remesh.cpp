@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -18,11 +20,13 @@
 #include "bimdf/quant/quantize.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "bimdf/render.hpp"
+#include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "cli_fixture.hpp"
 #include "mesh/quad_quality.hpp"
 #include "quadwild_quality.hpp"
 #include "shared_layouts.hpp"
 #include "test_helpers.hpp"
+#include "tmesh_collapse_support.hpp"
 
 namespace bimdf::quant {
 namespace {
@@ -247,6 +251,52 @@ TEST(RemeshShared, EveryLayoutBecomesAConformingQuadMeshOfTheReferenceSize) {
 // chart is pushed 90% of the way to a random neighbour, which folds many of its quads (local
 // tangles, as a distorting flattening makes), and smoothing must leave no inverted or
 // degenerate quad anywhere.
+// feature_edges_of: on the bundled bunny (feature curves, no border), exactly the quad edges
+// the feature subsides were tessellated into — as many as their lengths add up to — each with
+// both ends on the layout's feature polylines; and the file written for them reads back as the
+// same edges (what `remesh --feature-out` hands to `requantize --feature`).
+TEST(Remesh, FeatureEdgesOfTheBunnyAreItsFeatureSubsidesTessellated) {
+  const Layout layout =
+      read_quadwild_layout(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj");
+  const Remeshed r = remesh(layout);
+  const std::vector<std::array<int, 2>> edges = feature_edges_of(layout, r.smoothed);
+  std::set<std::pair<int, int>> feature;
+  for (const auto& e : layout.feature_edges)
+    feature.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
+  int64_t expected = 0;
+  for (size_t s = 0; s < layout.subsides.size(); ++s) {
+    const Subside& sub = layout.subsides[s];
+    bool along = !sub.on_border();
+    for (size_t i = 0; along && i + 1 < sub.vertices.size(); ++i)
+      along = feature.count({std::min(sub.vertices[i], sub.vertices[i + 1]),
+                             std::max(sub.vertices[i], sub.vertices[i + 1])}) > 0;
+    if (along) expected += r.quantization.lengths()[s];
+  }
+  ASSERT_GT(expected, 100);
+  EXPECT_EQ(static_cast<int64_t>(edges.size()), expected);
+  EXPECT_EQ(r.smoothed.released_from_features, 0);
+  const auto distance_to_features = [&](const std::array<double, 3>& p) {
+    double best = INFINITY;
+    for (const auto& [a, b] : feature)
+      best = std::min(best, tmesh::testsupport::distance_to_segment(p, layout.mesh.vertices[a],
+                                                                    layout.mesh.vertices[b]));
+    return best;
+  };
+  for (const auto& [a, b] : edges) {
+    EXPECT_LT(distance_to_features(r.smoothed.mesh.vertices[a]), 1e-9) << a;
+    EXPECT_LT(distance_to_features(r.smoothed.mesh.vertices[b]), 1e-9) << b;
+  }
+  std::ostringstream file;
+  tmesh::write_quad_feature_file(file, r.smoothed.mesh, edges);
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "bimdf_remesh_bunny_quads.feature").string();
+  std::ofstream(path) << file.str();
+  std::vector<std::array<int, 2>> back = tmesh::read_quad_feature_file(path, r.smoothed.mesh);
+  for (auto& e : back) e = {std::min(e[0], e[1]), std::max(e[0], e[1])};
+  std::sort(back.begin(), back.end());
+  EXPECT_EQ(back, edges);
+}
+
 TEST(Remesh, SmoothingUntanglesAFoldedChart) {
   const Layout layout =
       read_quadwild_layout(std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj");
@@ -528,6 +578,40 @@ TEST_F(RemeshCli, CompareReportsTheOtherMeshAsMetricsDoes) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
             "error: " + path("missing.obj") + ": cannot open file: No such file or directory\n");
+}
+
+// --feature-out: the remeshed bunny's feature edges, as requantize --feature reads them; with
+// the file (and no dihedral test) requantize traces from other seeds than with the curves it
+// finds at 35° on the quads itself. Never over an input, never the mesh's own path.
+TEST_F(RemeshCli, FeatureOutIsWhatRequantizeReads) {
+  const std::string layout = std::string(BIMDF_EXAMPLES_DIR) + "/npm_bunny/npm_bunny.obj";
+  testing::CliRun r =
+      run("remesh " + layout + " -o " + path("m.obj") + " --feature-out " + path("m.feature"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const QuadMesh m = read_obj_quads(path("m.obj"));
+  const auto edges = tmesh::read_quad_feature_file(path("m.feature"), m);
+  EXPECT_GT(edges.size(), 100u);
+  r = run("requantize " + path("m.obj") + " --feature " + path("m.feature") +
+          " --sharp-angle 180 --coarse --max-angle 45 -o " + path("c.obj") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["singularities_in"], j["singularities_out"]);
+  r = run("requantize " + path("m.obj") + " --coarse --max-angle 45 -o " + path("c2.obj") +
+          " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(nlohmann::json::parse(r.out)["seeds"], j["seeds"]);
+
+  const std::string before = slurp(layout);
+  r = run("remesh " + layout + " -o " + path("m2.obj") + " --feature-out " + layout);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "error: output file " + layout + " is the input file " + layout +
+                       "; refusing to overwrite an input\n");
+  EXPECT_FALSE(std::filesystem::exists(path("m2.obj")));
+  EXPECT_EQ(slurp(layout), before);
+  r = run("remesh " + layout + " -o " + path("m3.obj") + " --feature-out " + path("m3.obj"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "error: --feature-out and --output name the same file " + path("m3.obj") + "\n");
+  EXPECT_FALSE(std::filesystem::exists(path("m3.obj")));
 }
 
 TEST_F(RemeshCli, TessellateReadsQuantizeOutputAndReportsBadLengths) {

@@ -19,6 +19,8 @@
 #include "bimdf/tmesh/collapse.hpp"
 #include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/quantize.hpp"
+#include "bimdf/tmesh/requantize.hpp"
+#include "tmesh/separation_repair.hpp"
 #include "tmesh/smooth_requantized.hpp"
 #include "tmesh_collapse_support.hpp"
 #include "tmesh_fixtures.hpp"
@@ -217,6 +219,43 @@ TEST(TMeshCollapse, SingularVerticesMergingIsRefused) {
   } catch (const CollapseError& e) {
     EXPECT_STREQ(e.what(), "every patch would collapse (width or height 0): no quad is left");
   }
+}
+
+// requantize's collapse-failure repair: a cube whose vertical arcs want 0.2 collapses into a
+// pillow (the top glued onto the bottom, every vertex inside two quads), which no non-zero path
+// forbids. The repair bounds one zero element of the patches the failure names (the vertical
+// arcs and the side faces' heights tie; the first found is bounded) and solves again: a 3 × 3 × 1
+// box. With nothing zero there, it adds nothing.
+TEST(TMeshCollapse, RequantizeBoundsAZeroElementWhereTheCollapseFails) {
+  std::vector<int> axis;
+  TracedTMesh traced;
+  traced.tmesh = cube_tmesh(axis);
+  for (int a = 0; a < traced.tmesh.num_arcs(); ++a)
+    traced.tmesh.arc_target[a] = axis[a] == 2 ? 0.2 : 3;
+  const TMesh& t = traced.tmesh;
+  const TMeshQuantization plain = quantize_tmesh(t, incidence_of(t), {});
+  ASSERT_EQ(plain.arc_length, cube_lengths(axis, {3, 3, 0}));
+  std::vector<int> patches;
+  try {
+    collapse_and_tessellate(t, incidence_of(t), plain.arc_length, nullptr);
+    FAIL() << "no CollapseError";
+  } catch (const CollapseError& e) {
+    patches = e.patches();
+  }
+  ASSERT_FALSE(patches.empty());
+  MinOneConstraints bounds;
+  EXPECT_FALSE(add_collapse_failure_bounds(t, plain.arc_length, {}, bounds));
+  EXPECT_FALSE(add_collapse_failure_bounds(t, cube_lengths(axis, {3, 3, 1}), patches, bounds));
+  ASSERT_TRUE(add_collapse_failure_bounds(t, plain.arc_length, patches, bounds));
+  EXPECT_EQ(bounds.size(), 1);
+
+  const RequantizeResult r = requantize_tmesh(traced, nullptr, {}, "cube");
+  EXPECT_EQ(r.repair_rounds, 1);
+  EXPECT_EQ(r.quantization.arc_length, cube_lengths(axis, {3, 3, 1}));
+  EXPECT_EQ(r.collapsed.mesh.num_quads(), 2 * 9 + 4 * 3);
+  const QuadMeshMetrics m = measure_quad_mesh(r.collapsed.mesh);
+  EXPECT_TRUE(m.manifold());
+  EXPECT_EQ(m.euler_characteristic, 2);
 }
 
 TEST(TMeshCollapse, SelfGluedPatchIsRefused) {

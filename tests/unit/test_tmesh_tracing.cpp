@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "bimdf/error.hpp"
 #include "bimdf/tmesh/from_quad_mesh.hpp"
@@ -421,6 +422,27 @@ TEST(TraceTMesh, FeatureFile) {
   EXPECT_EQ(r.feature_edges.size(), 4u);
   EXPECT_EQ(r.tmesh.num_patches(), 2);
   EXPECT_EQ(r.tmesh.num_arcs(), 7);
+}
+
+// write_quad_feature_file writes what read_quad_feature_file reads: per edge its lowest quad.
+TEST(TraceTMesh, FeatureFileWrittenReadsBack) {
+  const QuadMesh mesh = grid_mesh(6, 4);
+  std::ostringstream out;
+  write_quad_feature_file(out, mesh, {{10, 3}, {17, 10}, {24, 17}, {31, 24}});
+  // Edge (3, 10) is quad 2's edge 1 (corner 1 (3, 0) to corner 2 (3, 1)), and so on up.
+  EXPECT_EQ(out.str(), "4\n2,1\n8,1\n14,1\n20,1\n");
+  const auto back = read_quad_feature_file(temp_file("written.feature", out.str()), mesh);
+  EXPECT_EQ(back, (std::vector<std::array<int, 2>>{{3, 10}, {10, 17}, {17, 24}, {24, 31}}));
+  std::ostringstream none;
+  write_quad_feature_file(none, mesh, {});
+  EXPECT_EQ(none.str(), "0\n");
+  try {
+    std::ostringstream bad;
+    write_quad_feature_file(bad, mesh, {{0, 1}, {0, 8}});
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "write_quad_feature_file: vertices 0 and 8 are not an edge of the mesh");
+  }
 }
 
 TEST(TraceTMesh, FeatureCurveEndsAndTurns) {

@@ -10,6 +10,7 @@
 // the input surface; smoothing (SmoothingOptions) then evens out the quads, staying on it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -91,6 +92,14 @@ struct SmoothingOptions {
 // wrong, or a chart's perimeter is odd or < 4.
 Tessellation tessellate(const Layout& layout, const std::vector<int64_t>& lengths,
                         const SmoothingOptions& smoothing = {});
+
+// The edges of `t.mesh` that run along the layout's feature curves (NAME.feature), as sorted
+// vertex pairs (lower id first): both ends lie on one feature subside — points inside it, or
+// the layout vertices it ends at. Border subsides are not features (the border is the border).
+// Vertices let off a feature (Tessellation::released_from_features) still count as on it. What
+// `bimdf remesh --feature-out` writes, so that `bimdf requantize --feature` keeps the curves the
+// layout had instead of guessing them from dihedral angles.
+std::vector<std::array<int, 2>> feature_edges_of(const Layout& layout, const Tessellation& t);
 
 // The smoothing step alone, on a tessellation of `layout` (called by tessellate).
 void smooth_on_surface(const Layout& layout, Tessellation& tessellation,

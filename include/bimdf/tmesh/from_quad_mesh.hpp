@@ -21,6 +21,7 @@
 #pragma once
 
 #include <array>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -108,5 +109,11 @@ std::vector<std::vector<int>> half_arcs_along(const TMesh& tmesh,
 // InputError naming the file and line.
 std::vector<std::array<int, 2>> read_quad_feature_file(const std::string& path,
                                                        const QuadMesh& mesh);
+
+// Writes `edges` (mesh vertex pairs) in the format read_quad_feature_file reads: the count, then
+// per edge `face,edge` of the lowest quad that has it. Throws std::invalid_argument naming the
+// first pair that is no edge of `mesh`.
+void write_quad_feature_file(std::ostream& out, const QuadMesh& mesh,
+                             const std::vector<std::array<int, 2>>& edges);
 
 }  // namespace bimdf::tmesh
