@@ -122,6 +122,14 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                   "separatrices may deviate from the input's grid lines by at most this many "
                   "degrees (90: unbounded); default 20 with --coarse, else the plain graph")
       ->check(number_from(0.0, 90.0));
+  cmd->add_option("--feature-traces", o.feature_traces,
+                  "Angle-bounded traces and feature curves: `cross` goes on across them, `stop` "
+                  "ends there (coarser layouts on organic models, worse ones on mechanical "
+                  "parts), `auto` with --coarse runs both and keeps the smaller base complex "
+                  "unless its quads are worse (more inverted or degenerate, or a mean scaled "
+                  "Jacobian 0.05 lower); without --coarse `auto` is `cross`")
+      ->default_val("auto")
+      ->check(CLI::IsMember({"cross", "stop", "auto"}));
   cmd->add_option("--cost", o.cost, "Deviation cost of each arc from its target length")
       ->default_val("quadratic")
       ->check(CLI::IsMember({"quadratic", "abs"}));
@@ -203,6 +211,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
       throw UsageError{o.tmesh_in + " refers to a quad mesh's vertices: give that mesh as MESH"};
   } else {
     ro.trace.sharp_angle_deg = o.sharp_angle;
+    ro.trace.cross_features = o.feature_traces != "stop";
     ro.trace.max_angle_deg = o.max_angle >= 0 ? o.max_angle
                              : o.coarse       ? tmesh::kDefaultCoarseMaxAngle
                                               : -1;
@@ -219,11 +228,18 @@ int run_requantize(const RequantizeCommandOptions& o) {
       print_stage(seconds_since(start), p.stage, p.detail);
     };
   }
-  if (!o.tmesh_out.empty()) {
+  // --feature-traces auto with --coarse: a second run with traces ending at feature curves
+  // (tmesh::FeatureTraces::Auto, as tmesh::requantize does), which may replace the first.
+  const bool bounded = o.tmesh_in.empty() && ro.trace.max_angle_deg >= 0;
+  const bool compare_stops =
+      bounded && o.feature_traces == "auto" && o.coarse && !traced.feature_edges.empty();
+  const auto write_tmesh_out = [&](const tmesh::TMesh& t) {
+    if (o.tmesh_out.empty()) return;
     std::ostringstream text;
-    tmesh::write_tmesh_json(text, traced.tmesh);
+    tmesh::write_tmesh_json(text, t);
     write_text(o.tmesh_out, text.str(), inputs);
-  }
+  };
+  if (!compare_stops) write_tmesh_out(traced.tmesh);
   // The quads the density asks for: the targets' area (for a traced mesh, its quads times the
   // density squared). The coarse modes choose their own count.
   if (!o.no_calibration && !o.coarse)
@@ -233,6 +249,11 @@ int run_requantize(const RequantizeCommandOptions& o) {
     r = tmesh::requantize_tmesh(std::move(traced), have_mesh ? &mesh : nullptr, ro, source);
   } catch (const tmesh::CollapseError& e) {
     throw std::runtime_error(std::string("collapsing the quantized T-mesh failed: ") + e.what());
+  }
+  if (bounded) r.feature_traces = ro.trace.cross_features ? "cross" : "stop";
+  if (compare_stops) {  // coarse: no calibration, the kept T-mesh's targets are as traced
+    r = tmesh::compare_feature_stops(std::move(r), mesh, ro, o.mesh);
+    write_tmesh_out(r.traced.tmesh);
   }
   const tmesh::TMesh& tm = r.traced.tmesh;
   const tmesh::TMeshQuantization& q = r.quantization;
@@ -250,12 +271,20 @@ int run_requantize(const RequantizeCommandOptions& o) {
     j["max_angle"] = ro.trace.max_angle_deg;
     j["crossings"] = r.traced.crossings;
   }
+  if (!r.feature_traces.empty()) {
+    j["feature_traces"] = r.feature_traces;
+    if (r.other_base_complex >= 0)
+      j["feature_traces_other"] = {{"base_complex", r.other_base_complex},
+                                   {"scaled_jacobian_mean", r.other_scaled_jacobian_mean}};
+    if (!r.other_failure.empty()) j["feature_traces_other"] = {{"failure", r.other_failure}};
+  }
   j["model"] = {{"nodes", q.nodes}, {"edges", q.edges}};
   s << "t-mesh        " << tm.num_patches() << " patches, " << tm.num_arcs() << " arcs, "
     << r.traced.seeds.size() << " seeds, " << tm.nonzero_paths.size() << " non-zero paths ("
     << q.constraints.size() << " min-one constraints: " << q.constraints.sides.size() << " sides, "
     << q.constraints.arcs.size() << " arcs)\n";
   s << "status        " << status_name(q.status) << "\n";
+  if (!r.feature_traces.empty()) s << "features      " << tmesh::feature_traces_summary(r) << "\n";
   if (q.arc_length.empty()) {
     // Only a T-mesh from elsewhere can lack a valid quantization: one traced on a quad mesh
     // always has one (the input's own edge counts).

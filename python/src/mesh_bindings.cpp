@@ -317,9 +317,12 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
                      double sharp_angle, const std::string& cost, const std::string& coarse_lengths,
                      bool calibrate, int smooth_iterations, double smooth_damping,
                      int quality_rounds, int threads, const std::string& half_arc,
-                     double reorder_weight, bool keep_crossings) {
+                     double reorder_weight, bool keep_crossings,
+                     const std::string& feature_traces) {
   const auto start = std::chrono::steady_clock::now();
   const QuadMesh mesh = quad_mesh_from_python(V, F);
+  if (feature_traces != "cross" && feature_traces != "stop" && feature_traces != "auto")
+    throw py::value_error("feature_traces must be 'cross', 'stop' or 'auto'");
   if (int(scale != 1) + int(bool(edge_length)) + int(bool(target_faces)) > 1)
     throw py::value_error("give at most one of scale, edge_length, target_faces");
   if (coarse && relaxed) throw py::value_error("coarse and relaxed exclude each other");
@@ -362,6 +365,7 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   ro.quantize.threads = threads;
   ro.smoothing = smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
   ro.trace.sharp_angle_deg = sharp_angle;
+  ro.trace.cross_features = feature_traces != "stop";
   ro.trace.max_angle_deg = max_angle ? *max_angle : coarse ? tmesh::kDefaultCoarseMaxAngle : -1;
   ro.trace.density = tmesh::requested_density(mesh, scale, edge_length.value_or(0),
                                               target_faces.value_or(0), "<arrays>");
@@ -373,6 +377,9 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
     if (calibrate && !coarse)
       ro.target_quads = std::max<int64_t>(1, std::llround(tmesh::target_quads(traced.tmesh)));
     r = tmesh::requantize_tmesh(std::move(traced), &mesh, ro, "<arrays>");
+    if (ro.trace.max_angle_deg >= 0) r.feature_traces = ro.trace.cross_features ? "cross" : "stop";
+    if (feature_traces == "auto" && coarse && ro.trace.max_angle_deg >= 0)
+      r = tmesh::compare_feature_stops(std::move(r), mesh, ro, "<arrays>");
     if (!r.collapsed.mesh.quads.empty()) {
       TriangleMesh reference;
       reference.vertices = mesh.vertices;
@@ -398,6 +405,13 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   report["zero_arcs"] = q.zero_arcs;
   report["repair_rounds"] = r.repair_rounds;
   report["half_arc"] = half_arc_used;
+  if (!r.feature_traces.empty()) {
+    report["feature_traces"] = r.feature_traces;
+    if (r.other_base_complex >= 0)
+      report["feature_traces_other"] =
+          py::dict(py::arg("base_complex") = r.other_base_complex,
+                   py::arg("scaled_jacobian_mean") = r.other_scaled_jacobian_mean);
+  }
   if (r.half_arc) {
     report["half_arc_paths"] = r.half_arc->relaxed.size();
     report["reordered_junctions"] = r.reordered_junctions;
@@ -470,19 +484,21 @@ void bind_mesh(py::module_& m) {
         "pairs of opposite singularities left out of the parametrization, as --cancel-pairs; the "
         "report's 'layout' says how it was made). Returns (V, F, report): "
         "vertices float64 (n, 3), quads int64 (m, 4), the report dict.");
-  m.def(
-      "requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("scale") = 1.0,
-      py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
-      py::arg("coarse") = false, py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
-      py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0, py::arg("cost") = "quadratic",
-      py::arg("coarse_lengths") = "uniform", py::arg("calibrate") = true,
-      py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
-      py::arg("quality_rounds") = 30, py::arg("threads") = 1, py::arg("half_arc") = "auto",
-      py::arg("reorder_weight") = 1.0, py::arg("keep_crossings") = false,
-      "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
-      "coarse=True the coarsest layout the separation constraints allow; half_arc: 'auto' — "
-      "bounded with coarse, else off —, 'exact', 'bounded' or 'off'). Returns (V, F, "
-      "report).");
+  m.def("requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(),
+        py::arg("scale") = 1.0, py::arg("edge_length") = py::none(),
+        py::arg("target_faces") = py::none(), py::arg("coarse") = false,
+        py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
+        py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0,
+        py::arg("cost") = "quadratic", py::arg("coarse_lengths") = "uniform",
+        py::arg("calibrate") = true, py::arg("smooth_iterations") = 30,
+        py::arg("smooth_damping") = 0.5, py::arg("quality_rounds") = 30, py::arg("threads") = 1,
+        py::arg("half_arc") = "auto", py::arg("reorder_weight") = 1.0,
+        py::arg("keep_crossings") = false, py::arg("feature_traces") = "auto",
+        "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
+        "coarse=True the coarsest layout the separation constraints allow; half_arc: 'auto' — "
+        "bounded with coarse, else off —, 'exact', 'bounded' or 'off'; feature_traces: 'cross', "
+        "'stop' or 'auto' — with coarse both, the smaller base complex kept unless its quads are "
+        "worse —, as --feature-traces). Returns (V, F, report).");
   m.def(
       "metrics",
       [](py::handle V, py::handle F, py::handle reference) {

@@ -140,6 +140,8 @@ def test_requantize_equals_the_cli(bunny_remeshed, tmp_path):
         for key in ("status", "quads", "zero_arcs", "tmesh_patches", "nonzero_paths", "half_arc"):
             assert report[key] == cli_report[key], key
         assert report.get("coarse_lengths") == cli_report.get("coarse_lengths")
+        assert report.get("feature_traces") == cli_report.get("feature_traces")
+        assert ("feature_traces" in report) == ("max_angle" in kwargs)
         assert_same_numbers(report["metrics"], cli_report["metrics"])
 
 
@@ -178,6 +180,8 @@ def test_mesh_errors_are_the_documented_exceptions(tmp_path):
     with pytest.raises(ValueError, match=r"^reorder_weight and keep_crossings need bounded "
                                          r"half-arc quantization$"):
         bimdf.requantize(V, np.array([[0, 1, 2, 3]]), reorder_weight=2.0)
+    with pytest.raises(ValueError, match=r"^feature_traces must be 'cross', 'stop' or 'auto'$"):
+        bimdf.requantize(V, np.array([[0, 1, 2, 3]]), feature_traces="both")
     with pytest.raises(ValueError, match=r"^scale must be > 0$"):
         bimdf.remesh(str(BUNNY_LAYOUT), scale=0.0)
     with pytest.raises(ValueError, match=r"^give at most one of scale, edge_length, target_faces$"):

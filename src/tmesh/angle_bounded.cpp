@@ -340,7 +340,8 @@ void prune_and_sort(const QuadMeshTopology& topo, std::vector<std::vector<int>>&
 
 AngleBoundedGraph trace_angle_bounded(const QuadMeshTopology& topo,
                                       const std::vector<uint8_t>& feature_edge,
-                                      const std::vector<int>& seeds, double max_angle_deg) {
+                                      const std::vector<int>& seeds, double max_angle_deg,
+                                      bool cross_features) {
   if (feature_edge.size() != size_t(topo.num_edges()))
     throw std::invalid_argument("trace_angle_bounded: " + std::to_string(feature_edge.size()) +
                                 " feature flags for " + std::to_string(topo.num_edges()) +
@@ -360,7 +361,7 @@ AngleBoundedGraph trace_angle_bounded(const QuadMeshTopology& topo,
   const std::vector<uint8_t> stop = stop_vertices(topo, seeds);
   const std::vector<uint8_t> on_curve = curve_vertices(topo, feature_edge);
   AngleBoundedGraph g;
-  g.traces = trace_extended_motorcycle_graph(topo, feature_edge, seeds, /*cross_features=*/true);
+  g.traces = trace_extended_motorcycle_graph(topo, feature_edge, seeds, cross_features);
   if (angle_rule) {
     Lockstep lockstep(topo, stop, on_curve, g.traces);
     std::vector<int> keep(g.traces.size(), 0);

@@ -10,12 +10,15 @@
 // and every non-zero chain is a straight chain of cut edges from a seed.
 //
 // Traces. From every seed along every edge that is neither border nor feature (the traces of
-// trace_extended_motorcycle_graph with cross_features, in the same emission order), each going
-// straight on through collisions and across feature curves (ours: a separatrix crossing a
-// feature then stays in the T-mesh on both sides, and a coarsening cannot bend it onto another
-// singularity there — which grew the base complex of a cylinder-like part from 6 to 10) until
-// it reaches the border or a seed, or would repeat a directed edge — or until the angle rule
-// stops it:
+// trace_extended_motorcycle_graph, in the same emission order), each going straight on through
+// collisions and — with `cross_features` (ours) — across feature curves, until it reaches the
+// border or a seed, or would repeat a directed edge — or until the angle rule stops it. Without
+// `cross_features` a trace also ends where it reaches a feature curve (Lyon et al.'s rule, as
+// far as we know it: features are arcs that traces end on). Crossing keeps a separatrix in the
+// T-mesh on both sides, so a coarsening cannot bend it onto another singularity there (which
+// grew a cylinder-like part's base complex from 6 to 10, dragknob); ending leaves the far side
+// free, which on organic models with feature lines gives far coarser layouts (measured in
+// docs/benchmarks.md, "Coarse layouts"). The angle rule:
 //   * A crossing of traces t_i (from seed i) and t_j (seed j, j ≠ i as traces) is a regular
 //     interior vertex n that both traces have reached, arriving along perpendicular edges. With
 //     l_ij the edges along t_i from i to n and l_ji along t_j, the right triangle (i, n, j)
@@ -96,6 +99,7 @@ struct AngleBoundedGraph {
 // vertex, or max_angle_deg is negative or NaN.
 AngleBoundedGraph trace_angle_bounded(const QuadMeshTopology& topo,
                                       const std::vector<uint8_t>& feature_edge,
-                                      const std::vector<int>& seeds, double max_angle_deg);
+                                      const std::vector<int>& seeds, double max_angle_deg,
+                                      bool cross_features = true);
 
 }  // namespace bimdf::tmesh::detail

@@ -197,7 +197,8 @@ TracedTMesh trace_tmesh(const QuadMesh& mesh, const TraceOptions& options,
   detail::MotorcycleGraph graph;
   detail::AngleBoundedGraph bounded;
   if (angle_bounded) {
-    bounded = detail::trace_angle_bounded(topo, feature, out.seeds, options.max_angle_deg);
+    bounded = detail::trace_angle_bounded(topo, feature, out.seeds, options.max_angle_deg,
+                                          options.cross_features);
     graph.traces = bounded.traces;
     graph.cut = bounded.cut;
   } else {

@@ -52,6 +52,13 @@ TMeshQuantization calibrate_density(TMesh& tm, const std::vector<double>& base,
   return best;
 }
 
+// "0.949": a scaled Jacobian in a report.
+std::string three_decimals(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", x);
+  return text;
+}
+
 // A figure for a progress report: six significant digits.
 std::string figure(double x) {
   char text[32];
@@ -111,10 +118,91 @@ double requested_density(const QuadMesh& mesh, double scale, double edge_length,
   return 1 / scale;
 }
 
+bool prefer_coarser_layout(const QuadMeshMetrics& coarser, const QuadMeshMetrics& other,
+                           double slack) {
+  return coarser.base_complex_faces < other.base_complex_faces &&
+         coarser.inverted + coarser.degenerate <= other.inverted + other.degenerate &&
+         coarser.scaled_jacobian_mean >= other.scaled_jacobian_mean - slack;
+}
+
+RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop, double slack) {
+  if (stop.collapsed.mesh.quads.empty()) return cross;
+  const QuadMeshMetrics a = measure_quad_mesh(cross.collapsed.mesh);
+  const QuadMeshMetrics b = measure_quad_mesh(stop.collapsed.mesh);
+  const bool keep_stop = cross.collapsed.mesh.quads.empty() || prefer_coarser_layout(b, a, slack);
+  RequantizeResult& kept = keep_stop ? stop : cross;
+  const RequantizeResult& other = keep_stop ? cross : stop;
+  const QuadMeshMetrics& other_metrics = keep_stop ? a : b;
+  kept.other_base_complex = other_metrics.base_complex_faces;
+  kept.other_scaled_jacobian_mean = other_metrics.scaled_jacobian_mean;
+  kept.time_trace_s += other.time_trace_s;
+  kept.time_quantize_s += other.time_quantize_s;
+  kept.time_collapse_s += other.time_collapse_s;
+  kept.time_smoothing_s += other.time_smoothing_s;
+  return std::move(kept);
+}
+
+RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& mesh,
+                                       RequantizeOptions options, const std::string& source) {
+  if (cross.traced.feature_edges.empty()) return cross;  // nothing to stop at
+  const auto start = std::chrono::steady_clock::now();
+  const auto report = [&](const char* stage, const std::string& detail) {
+    if (options.progress) options.progress({bimdf::detail::seconds_since(start), stage, detail});
+  };
+  options.trace.cross_features = false;
+  RequantizeResult stop;
+  try {
+    bimdf::detail::Stopwatch t;
+    TracedTMesh traced = trace_tmesh(mesh, options.trace, source);
+    const double trace_s = t.lap();
+    report("traced", progress_summary(traced.tmesh));
+    stop = requantize_tmesh(std::move(traced), &mesh, options, source);
+    stop.time_trace_s = trace_s;
+    stop.feature_traces = "stop";
+  } catch (const CollapseError& e) {
+    cross.other_failure = e.what();
+    report("compared", feature_traces_summary(cross));
+    return cross;
+  }
+  RequantizeResult kept =
+      keep_coarser_run(std::move(cross), std::move(stop), options.coarser_quality_slack);
+  report("compared", feature_traces_summary(kept));
+  return kept;
+}
+
+std::string feature_traces_summary(const RequantizeResult& r) {
+  if (r.feature_traces.empty()) return "";
+  const bool crossing = r.feature_traces == "cross";
+  std::string s = crossing ? "traces cross feature curves" : "traces end at feature curves";
+  if (!r.other_failure.empty()) return s + " (ending there failed: " + r.other_failure + ")";
+  if (r.other_base_complex >= 0)
+    s += "; kept against " + std::string(crossing ? "ending there" : "crossing them") +
+         " (base complex " + std::to_string(r.other_base_complex) + ", mean scaled Jacobian " +
+         three_decimals(r.other_scaled_jacobian_mean) + ")";
+  return s;
+}
+
 RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& options,
                             const std::string& source) {
+  const bool bounded = options.trace.max_angle_deg >= 0;
+  if (bounded && options.feature_traces == FeatureTraces::Auto) {
+    const auto start = std::chrono::steady_clock::now();
+    RequantizeOptions one = options;
+    one.feature_traces = FeatureTraces::Cross;
+    RequantizeResult cross = requantize(mesh, one, source);
+    const double offset = bimdf::detail::seconds_since(start);
+    if (options.progress)
+      one.progress = [&](RequantizeProgress p) {  // elapsed since this call, as promised
+        p.elapsed_s += offset;
+        options.progress(p);
+      };
+    return compare_feature_stops(std::move(cross), mesh, one, source);
+  }
   bimdf::detail::Stopwatch t;
-  TracedTMesh traced = trace_tmesh(mesh, options.trace, source);
+  RequantizeOptions traced_as = options;
+  if (options.feature_traces != FeatureTraces::Auto)
+    traced_as.trace.cross_features = options.feature_traces == FeatureTraces::Cross;
+  TracedTMesh traced = trace_tmesh(mesh, traced_as.trace, source);
   const double trace_s = t.lap();
   RequantizeOptions timed = options;
   if (options.progress) {
@@ -126,6 +214,7 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
   }
   RequantizeResult r = requantize_tmesh(std::move(traced), &mesh, timed, source);
   r.time_trace_s = trace_s;
+  if (bounded) r.feature_traces = traced_as.trace.cross_features ? "cross" : "stop";
   return r;
 }
 

@@ -601,6 +601,38 @@ TEST_F(RemeshCli, FeatureOutIsWhatRequantizeReads) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(nlohmann::json::parse(r.out)["seeds"], j["seeds"]);
 
+  // --feature-traces: auto keeps the run with traces ending at the curves exactly when its base
+  // complex is smaller, it has no more inverted or degenerate quads and a mean scaled Jacobian at
+  // most 0.05 lower (prefer_coarser_layout), and reports the other run.
+  std::map<std::string, nlohmann::json> run_with;
+  for (const std::string mode : {"cross", "stop", "auto"}) {
+    r = run("requantize " + path("m.obj") + " --feature " + path("m.feature") +
+            " --sharp-angle 180 --coarse --max-angle 45 --json -o " + path(mode + ".obj") +
+            " --feature-traces " + mode);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    run_with[mode] = nlohmann::json::parse(r.out);
+  }
+  const auto& cross = run_with["cross"];
+  const auto& stop = run_with["stop"];
+  const auto& chosen = run_with["auto"];
+  EXPECT_EQ(cross["feature_traces"], "cross");
+  EXPECT_EQ(stop["feature_traces"], "stop");
+  const auto bad = [](const nlohmann::json& x) {
+    return x["metrics"]["inverted"].get<int>() + x["metrics"]["degenerate"].get<int>();
+  };
+  const auto mean = [](const nlohmann::json& x) {
+    return x["metrics"]["scaled_jacobian"]["mean"].get<double>();
+  };
+  const bool stop_wins = stop["base_complex_out"] < cross["base_complex_out"] &&
+                         bad(stop) <= bad(cross) && mean(stop) >= mean(cross) - 0.05;
+  const auto& winner = stop_wins ? stop : cross;
+  const auto& loser = stop_wins ? cross : stop;
+  EXPECT_EQ(chosen["feature_traces"], winner["feature_traces"]);
+  EXPECT_EQ(chosen["base_complex_out"], winner["base_complex_out"]);
+  EXPECT_EQ(chosen["feature_traces_other"]["base_complex"], loser["base_complex_out"]);
+  EXPECT_EQ(slurp(path("auto.obj")),
+            slurp(path((stop_wins ? "stop" : "cross") + std::string(".obj"))));
+
   const std::string before = slurp(layout);
   r = run("remesh " + layout + " -o " + path("m2.obj") + " --feature-out " + layout);
   EXPECT_EQ(r.exit_code, 2);

@@ -377,6 +377,19 @@ TEST(TmeshAngle, TracesCrossFeatureLoopsAndKeepThemApart) {
     EXPECT_EQ(crossing, 8) << angle;  // 4 cube edges, a trace from each end
     EXPECT_EQ(check_graph(p, g), "") << angle;
   }
+  // Ending at feature curves instead (cross_features false, Lyon et al.'s rule): those 8 traces
+  // end one edge out, on the loop nearest their corner; the graph stays valid.
+  for (double angle : {10.0, 45.0}) {
+    const AngleBoundedGraph g = trace_angle_bounded(topo, p.feature, p.seeds, angle, false);
+    ASSERT_EQ(g.traces.size(), 24u);
+    int short_traces = 0;
+    for (const auto& t : g.traces) {
+      EXPECT_TRUE(t.edges.size() == 1 || t.edges.size() == 8) << t.edges.size();
+      short_traces += t.edges.size() == 1;
+    }
+    EXPECT_EQ(short_traces, 8) << angle;
+    EXPECT_EQ(check_graph(p, g), "") << angle;
+  }
 }
 
 // Reflex border corners A = (3, 3) and B = (8, 4), offset (5, 1): A's trace east along y = 3

@@ -6,8 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <map>
 #include <random>
 
+#include "bimdf/metrics.hpp"
 #include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/quantize.hpp"
 #include "bimdf/tmesh/requantize.hpp"
@@ -377,6 +380,64 @@ TEST(TMeshQuantize, BorderLoopRepairKeepsTwoArcHolesOpen) {
   EXPECT_GE(x[0] + x[1], 3);
   EXPECT_GE(x[2] + x[3], 3);
   EXPECT_EQ(check_quantization(t, x), "");
+}
+
+// FeatureTraces::Auto's rule: fewer patches, no more bad quads, mean at most `slack` lower.
+TEST(TMeshQuantize, PreferCoarserLayoutOnlyWhenItsQuadsHold) {
+  QuadMeshMetrics fine, coarse;
+  fine.base_complex_faces = 100, fine.scaled_jacobian_mean = 0.95;
+  coarse.base_complex_faces = 60, coarse.scaled_jacobian_mean = 0.91;
+  EXPECT_TRUE(prefer_coarser_layout(coarse, fine, 0.05));
+  EXPECT_FALSE(prefer_coarser_layout(coarse, fine, 0.03));  // 0.04 lower
+  EXPECT_FALSE(prefer_coarser_layout(fine, coarse, 0.05));  // more patches
+  coarse.degenerate = 1;
+  EXPECT_FALSE(prefer_coarser_layout(coarse, fine, 0.05));
+  fine.inverted = 1;  // as bad as each other now
+  EXPECT_TRUE(prefer_coarser_layout(coarse, fine, 0.05));
+  coarse.base_complex_faces = 100;  // a tie keeps the other
+  EXPECT_FALSE(prefer_coarser_layout(coarse, fine, 0.05));
+}
+
+// requantize with FeatureTraces::Auto is the run prefer_coarser_layout picks of Cross and Stop,
+// on random meshes with feature curves (coarse, 45°; there crossing always wins — the bundled
+// bunny, where ending wins, is RemeshCli.FeatureOutIsWhatRequantizeReads); without features,
+// one run.
+TEST(TMeshQuantize, AutoFeatureTracesKeepTheRunTheRulePicks) {
+  int compared = 0, stopped = 0;
+  for (uint64_t seed = 0; seed < 24; ++seed) {
+    const QuadMesh mesh = test::random_quad_mesh(seed);
+    RequantizeOptions o;
+    o.quantize.coarse = o.quantize.coarse_uniform = true;
+    o.trace.max_angle_deg = 45;
+    std::map<FeatureTraces, RequantizeResult> runs;
+    for (FeatureTraces mode : {FeatureTraces::Cross, FeatureTraces::Stop, FeatureTraces::Auto}) {
+      o.feature_traces = mode;
+      runs[mode] = requantize(mesh, o, "random");
+    }
+    const RequantizeResult& cross = runs[FeatureTraces::Cross];
+    const RequantizeResult& stop = runs[FeatureTraces::Stop];
+    const RequantizeResult& chosen = runs[FeatureTraces::Auto];
+    ASSERT_FALSE(cross.collapsed.mesh.quads.empty()) << seed;
+    EXPECT_EQ(cross.feature_traces, "cross");
+    if (cross.traced.feature_edges.empty()) {
+      EXPECT_EQ(chosen.other_base_complex, -1) << seed;
+      EXPECT_EQ(chosen.collapsed.mesh.quads, cross.collapsed.mesh.quads) << seed;
+      continue;
+    }
+    ++compared;
+    EXPECT_EQ(stop.feature_traces, "stop");
+    const bool stop_wins = prefer_coarser_layout(measure_quad_mesh(stop.collapsed.mesh),
+                                                 measure_quad_mesh(cross.collapsed.mesh), 0.05);
+    stopped += stop_wins;
+    const RequantizeResult& winner = stop_wins ? stop : cross;
+    const RequantizeResult& loser = stop_wins ? cross : stop;
+    EXPECT_EQ(chosen.feature_traces, winner.feature_traces) << seed;
+    EXPECT_EQ(chosen.collapsed.mesh.quads, winner.collapsed.mesh.quads) << seed;
+    EXPECT_EQ(chosen.other_base_complex, measure_quad_mesh(loser.collapsed.mesh).base_complex_faces)
+        << seed;
+  }
+  std::cout << compared << " meshes with feature curves, " << stopped << " kept ending there\n";
+  EXPECT_GE(compared, 4);
 }
 
 TEST(TMeshQuantize, CheckNamesTheViolation) {

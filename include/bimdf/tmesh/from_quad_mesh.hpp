@@ -46,6 +46,9 @@ struct TraceOptions {
   // onto another's separatrix at a deviation above the angle, and feature curves apart where
   // a trace crosses between them — the T-mesh of `requantize --coarse`.
   double max_angle_deg = -1;
+  // With max_angle_deg ≥ 0: whether the traces go on across feature curves (true) or end where
+  // they reach one (src/tmesh/angle_bounded.hpp; requantize's FeatureTraces chooses).
+  bool cross_features = true;
 };
 
 struct TracedTMesh {

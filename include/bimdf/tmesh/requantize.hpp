@@ -8,6 +8,7 @@
 #include <string>
 
 #include "bimdf/mesh.hpp"
+#include "bimdf/metrics.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "bimdf/tmesh/collapse.hpp"
 #include "bimdf/tmesh/from_quad_mesh.hpp"
@@ -20,10 +21,21 @@ namespace bimdf::tmesh {
 struct RequantizeProgress {
   double elapsed_s = 0;  // since requantize (or requantize_tmesh) began
   // "traced", "half-arc" (the cut), "quantized", "collapsed", "smoothed", "repair" (what was
-  // found and what is done about it: a solve again follows), "fallback" (half-arc given up).
+  // found and what is done about it: a solve again follows), "fallback" (half-arc given up),
+  // "compared" (FeatureTraces::Auto: which run was kept; every stage before it reported twice).
   std::string stage;
   std::string detail;  // what the stage found, in words and figures
 };
+
+// Where angle-bounded traces (TraceOptions::max_angle_deg ≥ 0) reach a feature curve. Cross:
+// they go on across it (TraceOptions::cross_features); Stop: they end there; Auto: requantize
+// runs both and keeps what prefer_coarser_layout picks (one run when the mesh has no feature
+// curve). Measured at 45° on the 23 remeshed shared layouts (docs/benchmarks.md, "Coarse
+// layouts"): stopping gives organic models with feature lines coarser layouts
+// (mannequin-devil's base complex 0.67 → 0.39 of the input's, joint 0.59 → 0.40), mechanical
+// ones worse quads (anchor mean scaled Jacobian 0.97 → 0.87) or even finer layouts with an
+// inverted quad (rotor 0.17 → 1.67).
+enum class FeatureTraces { Cross, Stop, Auto };
 
 struct RequantizeOptions {
   TraceOptions trace;  // density, features
@@ -65,6 +77,10 @@ struct RequantizeOptions {
   // two sides at one of its vertices costing this much (HalfArcSetup::reorder_weight).
   double reorder_weight = -1;
   bool keep_crossings = false;  // HalfArcSetup::keep_crossings (bounded only)
+  // Angle-bounded tracing only (requantize, not requantize_tmesh): see FeatureTraces. With Auto,
+  // trace.cross_features is ignored; otherwise Cross and Stop set it.
+  FeatureTraces feature_traces = FeatureTraces::Cross;
+  double coarser_quality_slack = 0.05;  // prefer_coarser_layout's slack, for Auto
   // Called after every stage (RequantizeProgress) on the calling thread; empty: none. A coarse
   // exact half-arc run on a large layout can take minutes of repairs, which this shows.
   std::function<void(const RequantizeProgress&)> progress;
@@ -100,8 +116,42 @@ struct RequantizeResult {
   // Not empty when the half-arc quantization did not collapse into a mesh (the collapse's
   // message): the result is then the arc quantization's (half_arc empty), as without half_arc.
   std::string half_arc_fallback;
+  // Angle-bounded tracing: "cross" or "stop", how the traces kept met feature curves ("" for the
+  // plain motorcycle graph). With FeatureTraces::Auto and feature curves: the other run's base
+  // complex and mean scaled Jacobian (−1 / 0 when there was one run, or the other failed: its
+  // message in other_failure). Times then add up both runs.
+  std::string feature_traces;
+  int other_base_complex = -1;
+  double other_scaled_jacobian_mean = 0;
+  std::string other_failure;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
+
+// FeatureTraces::Auto's choice between two requantizations of one mesh: `coarser` is preferred
+// to `other` when its base complex has fewer patches, it has no more inverted and degenerate
+// quads, and its mean scaled Jacobian is at most `slack` below the other's — the tolerance
+// issue 52 allows a coarse layout against its input (0.05).
+bool prefer_coarser_layout(const QuadMeshMetrics& coarser, const QuadMeshMetrics& other,
+                           double slack);
+
+// FeatureTraces::Auto's last step, for two requantizations of one mesh traced with
+// cross_features true (`cross`) and false (`stop`): the one prefer_coarser_layout(stop, cross,
+// slack) picks (a run without a mesh loses), with the other's base complex and mean scaled
+// Jacobian (RequantizeResult::other_*) and both runs' times added up.
+RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop, double slack);
+
+// FeatureTraces::Auto after a first run `cross` of `mesh` (traced with cross_features true, and
+// feature_traces "cross"): traces `mesh` again with options.trace.cross_features false,
+// requantizes that T-mesh with `options` and returns keep_coarser_run's pick. When the first
+// T-mesh had no feature curve, the first run; when the second run's collapse fails, the first
+// with the message in other_failure. Reports "traced" and "compared" (elapsed since this call).
+RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& mesh,
+                                       RequantizeOptions options, const std::string& source);
+
+// "traces end at feature curves; kept against crossing them (base complex 885, mean scaled
+// Jacobian 0.949)": RequantizeResult::feature_traces and the comparison in words ("" for the
+// plain motorcycle graph).
+std::string feature_traces_summary(const RequantizeResult& r);
 
 // The largest deviation of separatrices from the input's grid lines, in degrees, that
 // `--coarse` traces with when none is given (TraceOptions::max_angle_deg; Lyon et al. 2021).
