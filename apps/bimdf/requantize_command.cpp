@@ -273,10 +273,12 @@ int run_requantize(const RequantizeCommandOptions& o) {
   }
   if (!r.feature_traces.empty()) {
     j["feature_traces"] = r.feature_traces;
-    if (r.other_base_complex >= 0)
-      j["feature_traces_other"] = {{"base_complex", r.other_base_complex},
-                                   {"scaled_jacobian_mean", r.other_scaled_jacobian_mean}};
-    if (!r.other_failure.empty()) j["feature_traces_other"] = {{"failure", r.other_failure}};
+    json other = json::object();
+    if (r.other_base_complex >= 0) other["base_complex"] = r.other_base_complex;
+    if (r.other_base_complex >= 0 && r.other_failure.empty())
+      other["scaled_jacobian_mean"] = r.other_scaled_jacobian_mean;
+    if (!r.other_failure.empty()) other["failure"] = r.other_failure;
+    if (!other.empty()) j["feature_traces_other"] = other;
   }
   j["model"] = {{"nodes", q.nodes}, {"edges", q.edges}};
   s << "t-mesh        " << tm.num_patches() << " patches, " << tm.num_arcs() << " arcs, "

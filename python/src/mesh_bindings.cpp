@@ -407,10 +407,12 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   report["half_arc"] = half_arc_used;
   if (!r.feature_traces.empty()) {
     report["feature_traces"] = r.feature_traces;
-    if (r.other_base_complex >= 0)
-      report["feature_traces_other"] =
-          py::dict(py::arg("base_complex") = r.other_base_complex,
-                   py::arg("scaled_jacobian_mean") = r.other_scaled_jacobian_mean);
+    py::dict other;
+    if (r.other_base_complex >= 0) other["base_complex"] = r.other_base_complex;
+    if (r.other_base_complex >= 0 && r.other_failure.empty())
+      other["scaled_jacobian_mean"] = r.other_scaled_jacobian_mean;
+    if (!r.other_failure.empty()) other["failure"] = r.other_failure;
+    if (!other.empty()) report["feature_traces_other"] = other;
   }
   if (r.half_arc) {
     report["half_arc_paths"] = r.half_arc->relaxed.size();

@@ -126,6 +126,15 @@ bool prefer_coarser_layout(const QuadMeshMetrics& coarser, const QuadMeshMetrics
 }
 
 RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop, double slack) {
+  if (stop.given_up_at_base_complex > 0) {
+    cross.other_base_complex = stop.given_up_at_base_complex;
+    cross.other_failure =
+        "given up before smoothing: base complex " + std::to_string(stop.given_up_at_base_complex);
+    cross.time_trace_s += stop.time_trace_s;
+    cross.time_quantize_s += stop.time_quantize_s;
+    cross.time_collapse_s += stop.time_collapse_s;
+    return cross;
+  }
   if (stop.collapsed.mesh.quads.empty()) return cross;
   const QuadMeshMetrics a = measure_quad_mesh(cross.collapsed.mesh);
   const QuadMeshMetrics b = measure_quad_mesh(stop.collapsed.mesh);
@@ -150,6 +159,14 @@ RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& m
     if (options.progress) options.progress({bimdf::detail::seconds_since(start), stage, detail});
   };
   options.trace.cross_features = false;
+  // Only a coarser layout can win: give up before smoothing (the costly part, and where
+  // couplingdown's traces ending at curves spend minutes in repairs) when it is not.
+  options.give_up_at_base_complex = measure_quad_mesh(cross.collapsed.mesh).base_complex_faces;
+  // One smoothing, no repairs after it: a run that leaves quads inverted loses to one that
+  // does not anyway, and its repairs (each a smoothing again) took couplingdown at 10° from
+  // 2 s to over 3 minutes.
+  options.max_split_repairs = 0;
+  options.refit_uniform = false;
   RequantizeResult stop;
   try {
     bimdf::detail::Stopwatch t;
@@ -174,7 +191,7 @@ std::string feature_traces_summary(const RequantizeResult& r) {
   if (r.feature_traces.empty()) return "";
   const bool crossing = r.feature_traces == "cross";
   std::string s = crossing ? "traces cross feature curves" : "traces end at feature curves";
-  if (!r.other_failure.empty()) return s + " (ending there failed: " + r.other_failure + ")";
+  if (!r.other_failure.empty()) return s + " (ending there: " + r.other_failure + ")";
   if (r.other_base_complex >= 0)
     s += "; kept against " + std::string(crossing ? "ending there" : "crossing them") +
          " (base complex " + std::to_string(r.other_base_complex) + ", mean scaled Jacobian " +
@@ -382,6 +399,14 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
         continue;
       }
       r.repair_constraints = quantize.extra_constraints;
+      if (options.give_up_at_base_complex > 0 && !smoothed) {
+        const int patches = measure_quad_mesh(r.collapsed.mesh).base_complex_faces;
+        if (patches >= options.give_up_at_base_complex) {
+          r.given_up_at_base_complex = patches;
+          report("given up", "base complex " + std::to_string(patches) + " before smoothing");
+          return r;
+        }
+      }
       if (!on_mesh) break;
       SmoothedQuads left =
           smooth_requantized(*mesh, tm, incidence, r.traced.feature_edges, r.traced.feature_corners,

@@ -440,6 +440,30 @@ TEST(TMeshQuantize, AutoFeatureTracesKeepTheRunTheRulePicks) {
   EXPECT_GE(compared, 4);
 }
 
+// give_up_at_base_complex: requantize stops before smoothing once the collapsed mesh has that
+// many base-complex patches, and keep_coarser_run then keeps the other run, saying why.
+TEST(TMeshQuantize, ASecondRunGivesUpBeforeSmoothingWhenItIsNotCoarser) {
+  const QuadMesh mesh = test::random_quad_mesh(3);
+  RequantizeOptions o;
+  o.quantize.coarse = o.quantize.coarse_uniform = true;
+  o.trace.max_angle_deg = 45;
+  const RequantizeResult full = requantize(mesh, o, "random");
+  const int patches = measure_quad_mesh(full.collapsed.mesh).base_complex_faces;
+  ASSERT_GT(patches, 0);
+  EXPECT_EQ(full.given_up_at_base_complex, 0);
+  o.give_up_at_base_complex = patches + 1;  // not reached: the same result
+  EXPECT_EQ(requantize(mesh, o, "random").collapsed.mesh.quads, full.collapsed.mesh.quads);
+  o.give_up_at_base_complex = 1;
+  const RequantizeResult given_up = requantize(mesh, o, "random");
+  EXPECT_GE(given_up.given_up_at_base_complex, 1);
+  EXPECT_EQ(given_up.time_smoothing_s, 0);
+  const RequantizeResult kept = keep_coarser_run(full, given_up, 0.05);
+  EXPECT_EQ(kept.collapsed.mesh.quads, full.collapsed.mesh.quads);
+  EXPECT_EQ(kept.other_base_complex, given_up.given_up_at_base_complex);
+  EXPECT_EQ(kept.other_failure, "given up before smoothing: base complex " +
+                                    std::to_string(given_up.given_up_at_base_complex));
+}
+
 TEST(TMeshQuantize, CheckNamesTheViolation) {
   std::mt19937 rng(1);
   GridTMesh g = random_grid_tmesh(rng, 1, 1, 0);

@@ -22,7 +22,8 @@ struct RequantizeProgress {
   double elapsed_s = 0;  // since requantize (or requantize_tmesh) began
   // "traced", "half-arc" (the cut), "quantized", "collapsed", "smoothed", "repair" (what was
   // found and what is done about it: a solve again follows), "fallback" (half-arc given up),
-  // "compared" (FeatureTraces::Auto: which run was kept; every stage before it reported twice).
+  // "compared" (FeatureTraces::Auto: which run was kept; every stage before it reported twice),
+  // "given up" (give_up_at_base_complex).
   std::string stage;
   std::string detail;  // what the stage found, in words and figures
 };
@@ -81,6 +82,11 @@ struct RequantizeOptions {
   // trace.cross_features is ignored; otherwise Cross and Stop set it.
   FeatureTraces feature_traces = FeatureTraces::Cross;
   double coarser_quality_slack = 0.05;  // prefer_coarser_layout's slack, for Auto
+  // > 0: requantize_tmesh returns before the first smoothing when the collapsed mesh's base
+  // complex has at least this many patches (RequantizeResult::given_up_at_base_complex) — Auto's
+  // second run, which only wins with fewer patches than the first (a heuristic: the repairs
+  // after smoothing split quads or refit lengths, and rarely make a layout coarser).
+  int give_up_at_base_complex = 0;
   // Called after every stage (RequantizeProgress) on the calling thread; empty: none. A coarse
   // exact half-arc run on a large layout can take minutes of repairs, which this shows.
   std::function<void(const RequantizeProgress&)> progress;
@@ -123,7 +129,10 @@ struct RequantizeResult {
   std::string feature_traces;
   int other_base_complex = -1;
   double other_scaled_jacobian_mean = 0;
-  std::string other_failure;
+  std::string other_failure;  // or why it was given up (give_up_at_base_complex)
+  // With give_up_at_base_complex: the base complex the run stopped at before smoothing (its
+  // collapsed mesh is then unsmoothed); 0 when it went on.
+  int given_up_at_base_complex = 0;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
 
@@ -142,9 +151,14 @@ RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop,
 
 // FeatureTraces::Auto after a first run `cross` of `mesh` (traced with cross_features true, and
 // feature_traces "cross"): traces `mesh` again with options.trace.cross_features false,
-// requantizes that T-mesh with `options` and returns keep_coarser_run's pick. When the first
+// requantizes that T-mesh with `options` — but without the repairs after smoothing
+// (max_split_repairs 0, refit_uniform off: one smoothing) — and returns keep_coarser_run's
+// pick. When the first
 // T-mesh had no feature curve, the first run; when the second run's collapse fails, the first
-// with the message in other_failure. Reports "traced" and "compared" (elapsed since this call).
+// with the message in other_failure; when the second run's collapsed mesh, before smoothing,
+// has no fewer base-complex patches than the first's (give_up_at_base_complex), the first, with
+// that count in other_base_complex and other_failure. Reports "traced" and "compared" (elapsed
+// since this call).
 RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& mesh,
                                        RequantizeOptions options, const std::string& source);
 
