@@ -128,7 +128,7 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                   "parts), `auto` with --coarse runs both and keeps the smaller base complex "
                   "unless its quads are worse (more inverted or degenerate, or a mean scaled "
                   "Jacobian 0.05 lower); without --coarse `auto` is `cross`")
-      ->default_val("auto")
+      ->default_str("auto")
       ->check(CLI::IsMember({"cross", "stop", "auto"}));
   cmd->add_option("--cost", o.cost, "Deviation cost of each arc from its target length")
       ->default_val("quadratic")
@@ -193,6 +193,10 @@ int run_requantize(const RequantizeCommandOptions& o) {
     throw UsageError{
         "--reorder-weight and --keep-crossings need bounded half-arc quantization "
         "(--half-arc bounded, or --coarse)"};
+  if (!o.feature_traces.empty() && (!o.tmesh_in.empty() || (!o.coarse && o.max_angle < 0)))
+    throw UsageError{
+        "--feature-traces applies to the angle-bounded traces of a quad mesh (--coarse or "
+        "--max-angle, not --tmesh-in)"};
   if (o.compare_greedy && half_arc == "off")
     throw UsageError{
         "--compare-greedy needs half-arc quantization (--half-arc exact|bounded, or "
@@ -211,7 +215,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
       throw UsageError{o.tmesh_in + " refers to a quad mesh's vertices: give that mesh as MESH"};
   } else {
     ro.trace.sharp_angle_deg = o.sharp_angle;
-    ro.trace.cross_features = o.feature_traces != "stop";
+    ro.trace.cross_features = o.feature_traces != "stop";  // "" (not given): auto
     ro.trace.max_angle_deg = o.max_angle >= 0 ? o.max_angle
                              : o.coarse       ? tmesh::kDefaultCoarseMaxAngle
                                               : -1;
@@ -231,8 +235,8 @@ int run_requantize(const RequantizeCommandOptions& o) {
   // --feature-traces auto with --coarse: a second run with traces ending at feature curves
   // (tmesh::FeatureTraces::Auto, as tmesh::requantize does), which may replace the first.
   const bool bounded = o.tmesh_in.empty() && ro.trace.max_angle_deg >= 0;
-  const bool compare_stops =
-      bounded && o.feature_traces == "auto" && o.coarse && !traced.feature_edges.empty();
+  const bool auto_traces = o.feature_traces.empty() || o.feature_traces == "auto";
+  const bool compare_stops = bounded && auto_traces && o.coarse && !traced.feature_edges.empty();
   const auto write_tmesh_out = [&](const tmesh::TMesh& t) {
     if (o.tmesh_out.empty()) return;
     std::ostringstream text;

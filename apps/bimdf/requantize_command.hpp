@@ -29,7 +29,7 @@ struct RequantizeCommandOptions {
   bool keep_crossings = false;    // --keep-crossings, with --half-arc bounded
   bool compare_greedy = false;    // --compare-greedy
   double max_angle = -1;  // < 0: not given (--coarse then uses tmesh::kDefaultCoarseMaxAngle)
-  std::string feature_traces = "auto";  // --feature-traces cross|stop|auto (resolved in run)
+  std::string feature_traces;  // --feature-traces cross|stop|auto; "": not given (auto)
   int threads = 1;
   bool relaxed = false;       // --relaxed: irregular quad patches allowed at a cost
   double relaxed_weight = 1;  // --relaxed-weight: cost per unit of flow turning a corner

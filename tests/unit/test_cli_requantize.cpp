@@ -567,6 +567,17 @@ TEST_F(Requantize, BadInput) {
   r = run("requantize " + grid + " -o " + path("out.obj") + " --half-arc exact --relaxed");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("excludes"), std::string::npos) << r.err;
+  for (const char* extra : {" --feature-traces stop", " --feature-traces auto --scale 2"}) {
+    r = run("requantize " + grid + " -o " + path("out.obj") + extra);
+    EXPECT_EQ(r.exit_code, 2) << extra;
+    EXPECT_EQ(r.err,
+              "error: --feature-traces applies to the angle-bounded traces of a quad mesh "
+              "(--coarse or --max-angle, not --tmesh-in)\n")
+        << extra;
+  }
+  r = run("requantize " + grid + " -o " + path("out.obj") + " --feature-traces trace");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--feature-traces"), std::string::npos) << r.err;
   r = run("requantize " + grid + " -o " + path("out.obj") + " --reorder-weight 2");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
