@@ -254,7 +254,6 @@ int run_requantize(const RequantizeCommandOptions& o) {
   } catch (const tmesh::CollapseError& e) {
     throw std::runtime_error(std::string("collapsing the quantized T-mesh failed: ") + e.what());
   }
-  if (bounded) r.feature_traces = ro.trace.cross_features ? "cross" : "stop";
   if (compare_stops) {  // coarse: no calibration, the kept T-mesh's targets are as traced
     r = tmesh::compare_feature_stops(std::move(r), mesh, ro, o.mesh);
     write_tmesh_out(r.traced.tmesh);
@@ -275,8 +274,8 @@ int run_requantize(const RequantizeCommandOptions& o) {
     j["max_angle"] = ro.trace.max_angle_deg;
     j["crossings"] = r.traced.crossings;
   }
-  if (!r.feature_traces.empty()) {
-    j["feature_traces"] = r.feature_traces;
+  if (!r.traced.feature_traces.empty()) {
+    j["feature_traces"] = r.traced.feature_traces;
     json other = json::object();
     if (r.other_base_complex >= 0) other["base_complex"] = r.other_base_complex;
     if (r.other_base_complex >= 0 && r.other_failure.empty())
@@ -290,7 +289,8 @@ int run_requantize(const RequantizeCommandOptions& o) {
     << q.constraints.size() << " min-one constraints: " << q.constraints.sides.size() << " sides, "
     << q.constraints.arcs.size() << " arcs)\n";
   s << "status        " << status_name(q.status) << "\n";
-  if (!r.feature_traces.empty()) s << "features      " << tmesh::feature_traces_summary(r) << "\n";
+  if (!r.traced.feature_traces.empty())
+    s << "features      " << tmesh::feature_traces_summary(r) << "\n";
   if (q.arc_length.empty()) {
     // Only a T-mesh from elsewhere can lack a valid quantization: one traced on a quad mesh
     // always has one (the input's own edge counts).

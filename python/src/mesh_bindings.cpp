@@ -377,7 +377,6 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
     if (calibrate && !coarse)
       ro.target_quads = std::max<int64_t>(1, std::llround(tmesh::target_quads(traced.tmesh)));
     r = tmesh::requantize_tmesh(std::move(traced), &mesh, ro, "<arrays>");
-    if (ro.trace.max_angle_deg >= 0) r.feature_traces = ro.trace.cross_features ? "cross" : "stop";
     if (feature_traces == "auto" && coarse && ro.trace.max_angle_deg >= 0)
       r = tmesh::compare_feature_stops(std::move(r), mesh, ro, "<arrays>");
     if (!r.collapsed.mesh.quads.empty()) {
@@ -405,8 +404,8 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   report["zero_arcs"] = q.zero_arcs;
   report["repair_rounds"] = r.repair_rounds;
   report["half_arc"] = half_arc_used;
-  if (!r.feature_traces.empty()) {
-    report["feature_traces"] = r.feature_traces;
+  if (!r.traced.feature_traces.empty()) {
+    report["feature_traces"] = r.traced.feature_traces;
     py::dict other;
     if (r.other_base_complex >= 0) other["base_complex"] = r.other_base_complex;
     if (r.other_base_complex >= 0 && r.other_failure.empty())

@@ -208,6 +208,7 @@ TracedTMesh trace_tmesh(const QuadMesh& mesh, const TraceOptions& options,
       detail::trace_extended_motorcycle_graph(topo, feature, out.seeds);
   out.traces = static_cast<int>(graph.traces.size());
   out.crossings = bounded.crossings;
+  if (angle_bounded) out.feature_traces = options.cross_features ? "cross" : "stop";
   for (const auto& t : graph.traces) out.trace_vertices.push_back(t.vertices);
   std::vector<uint8_t> on_extended(E, 0);
   for (const auto& t : extended) {

@@ -125,14 +125,20 @@ bool prefer_coarser_layout(const QuadMeshMetrics& coarser, const QuadMeshMetrics
          coarser.scaled_jacobian_mean >= other.scaled_jacobian_mean - slack;
 }
 
+// Adds `other`'s stage times to `kept`'s: a result of two runs reports the work of both.
+void add_times(RequantizeResult& kept, const RequantizeResult& other) {
+  kept.time_trace_s += other.time_trace_s;
+  kept.time_quantize_s += other.time_quantize_s;
+  kept.time_collapse_s += other.time_collapse_s;
+  kept.time_smoothing_s += other.time_smoothing_s;
+}
+
 RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop, double slack) {
   if (stop.given_up_at_base_complex > 0) {
     cross.other_base_complex = stop.given_up_at_base_complex;
     cross.other_failure =
         "given up before smoothing: base complex " + std::to_string(stop.given_up_at_base_complex);
-    cross.time_trace_s += stop.time_trace_s;
-    cross.time_quantize_s += stop.time_quantize_s;
-    cross.time_collapse_s += stop.time_collapse_s;
+    add_times(cross, stop);
     return cross;
   }
   if (stop.collapsed.mesh.quads.empty()) return cross;
@@ -144,10 +150,7 @@ RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop,
   const QuadMeshMetrics& other_metrics = keep_stop ? a : b;
   kept.other_base_complex = other_metrics.base_complex_faces;
   kept.other_scaled_jacobian_mean = other_metrics.scaled_jacobian_mean;
-  kept.time_trace_s += other.time_trace_s;
-  kept.time_quantize_s += other.time_quantize_s;
-  kept.time_collapse_s += other.time_collapse_s;
-  kept.time_smoothing_s += other.time_smoothing_s;
+  add_times(kept, other);
   return std::move(kept);
 }
 
@@ -175,7 +178,6 @@ RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& m
     report("traced", progress_summary(traced.tmesh));
     stop = requantize_tmesh(std::move(traced), &mesh, options, source);
     stop.time_trace_s = trace_s;
-    stop.feature_traces = "stop";
   } catch (const CollapseError& e) {
     cross.other_failure = e.what();
     report("compared", feature_traces_summary(cross));
@@ -188,8 +190,8 @@ RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& m
 }
 
 std::string feature_traces_summary(const RequantizeResult& r) {
-  if (r.feature_traces.empty()) return "";
-  const bool crossing = r.feature_traces == "cross";
+  if (r.traced.feature_traces.empty()) return "";
+  const bool crossing = r.traced.feature_traces == "cross";
   std::string s = crossing ? "traces cross feature curves" : "traces end at feature curves";
   if (!r.other_failure.empty()) return s + " (ending there: " + r.other_failure + ")";
   if (r.other_base_complex >= 0)
@@ -216,10 +218,10 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
     return compare_feature_stops(std::move(cross), mesh, one, source);
   }
   bimdf::detail::Stopwatch t;
-  RequantizeOptions traced_as = options;
+  TraceOptions trace = options.trace;
   if (options.feature_traces != FeatureTraces::Auto)
-    traced_as.trace.cross_features = options.feature_traces == FeatureTraces::Cross;
-  TracedTMesh traced = trace_tmesh(mesh, traced_as.trace, source);
+    trace.cross_features = options.feature_traces == FeatureTraces::Cross;
+  TracedTMesh traced = trace_tmesh(mesh, trace, source);
   const double trace_s = t.lap();
   RequantizeOptions timed = options;
   if (options.progress) {
@@ -231,7 +233,6 @@ RequantizeResult requantize(const QuadMesh& mesh, const RequantizeOptions& optio
   }
   RequantizeResult r = requantize_tmesh(std::move(traced), &mesh, timed, source);
   r.time_trace_s = trace_s;
-  if (bounded) r.feature_traces = traced_as.trace.cross_features ? "cross" : "stop";
   return r;
 }
 

@@ -418,20 +418,20 @@ TEST(TMeshQuantize, AutoFeatureTracesKeepTheRunTheRulePicks) {
     const RequantizeResult& stop = runs[FeatureTraces::Stop];
     const RequantizeResult& chosen = runs[FeatureTraces::Auto];
     ASSERT_FALSE(cross.collapsed.mesh.quads.empty()) << seed;
-    EXPECT_EQ(cross.feature_traces, "cross");
+    EXPECT_EQ(cross.traced.feature_traces, "cross");
     if (cross.traced.feature_edges.empty()) {
       EXPECT_EQ(chosen.other_base_complex, -1) << seed;
       EXPECT_EQ(chosen.collapsed.mesh.quads, cross.collapsed.mesh.quads) << seed;
       continue;
     }
     ++compared;
-    EXPECT_EQ(stop.feature_traces, "stop");
+    EXPECT_EQ(stop.traced.feature_traces, "stop");
     const bool stop_wins = prefer_coarser_layout(measure_quad_mesh(stop.collapsed.mesh),
                                                  measure_quad_mesh(cross.collapsed.mesh), 0.05);
     stopped += stop_wins;
     const RequantizeResult& winner = stop_wins ? stop : cross;
     const RequantizeResult& loser = stop_wins ? cross : stop;
-    EXPECT_EQ(chosen.feature_traces, winner.feature_traces) << seed;
+    EXPECT_EQ(chosen.traced.feature_traces, winner.traced.feature_traces) << seed;
     EXPECT_EQ(chosen.collapsed.mesh.quads, winner.collapsed.mesh.quads) << seed;
     EXPECT_EQ(chosen.other_base_complex, measure_quad_mesh(loser.collapsed.mesh).base_complex_faces)
         << seed;

@@ -58,6 +58,9 @@ struct TracedTMesh {
   std::vector<int> seeds;                         // mesh vertices that emitted traces
   int traces = 0;                                 // traces started
   int crossings = 0;                              // trace crossings (angle-bounded graph only)
+  // Angle-bounded graph only: "cross" when traces went on across feature curves, "stop" when
+  // they ended there (TraceOptions::cross_features); "" for the plain motorcycle graph.
+  std::string feature_traces;
   int extended_trace_edges = 0;                   // mesh edges on extended traces (diagnostics)
 
   // Trace i, as the mesh vertices it runs through (its seed first), in the motorcycle graph

@@ -122,11 +122,10 @@ struct RequantizeResult {
   // Not empty when the half-arc quantization did not collapse into a mesh (the collapse's
   // message): the result is then the arc quantization's (half_arc empty), as without half_arc.
   std::string half_arc_fallback;
-  // Angle-bounded tracing: "cross" or "stop", how the traces kept met feature curves ("" for the
-  // plain motorcycle graph). With FeatureTraces::Auto and feature curves: the other run's base
-  // complex and mean scaled Jacobian (−1 / 0 when there was one run, or the other failed: its
-  // message in other_failure). Times then add up both runs.
-  std::string feature_traces;
+  // With FeatureTraces::Auto and feature curves (how the kept run's traces met them:
+  // traced.feature_traces): the other run's base complex and mean scaled Jacobian (−1 / 0 when
+  // there was one run, or the other failed: its message in other_failure). Times then add up
+  // both runs.
   int other_base_complex = -1;
   double other_scaled_jacobian_mean = 0;
   std::string other_failure;  // or why it was given up (give_up_at_base_complex)
@@ -163,7 +162,7 @@ RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& m
                                        RequantizeOptions options, const std::string& source);
 
 // "traces end at feature curves; kept against crossing them (base complex 885, mean scaled
-// Jacobian 0.949)": RequantizeResult::feature_traces and the comparison in words ("" for the
+// Jacobian 0.949)": traced.feature_traces and the comparison in words ("" for the
 // plain motorcycle graph).
 std::string feature_traces_summary(const RequantizeResult& r);
 
