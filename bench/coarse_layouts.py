@@ -112,8 +112,9 @@ def main():
 
     print("| model | angle | exit | BC in | BC out | ratio | singular | patches per singular "
           "| singularities kept | border loops kept | SJ mean in | SJ min | SJ mean | SJ p5 "
-          "| inverted (in) | degenerate | total s |")
-    print("|" + "---|" * 17)
+          "| inverted (in) | degenerate | max deviation between singular (to border) "
+          "| above the bound | total s |")
+    print("|" + "---|" * 19)
     rows = {angle: [] for angle in angles}
     for name, layout in models:
         made = make_input(a, name, layout, a.inputs)
@@ -132,7 +133,7 @@ def main():
             row = {"name": name, "ok": code == 0 and j is not None}
             rows[angle].append(row)
             if not row["ok"]:
-                print("| %s | %g° | %s | | | | | | | | | | | | | | %.1f |"
+                print("| %s | %g° | %s | | | | | | | | | | | | | | | | %.1f |"
                       % (name, angle, code, wall))
                 print("%s at %g°: %s" % (name, angle, err[0]), file=sys.stderr)
                 continue
@@ -146,21 +147,24 @@ def main():
                 loops=border_loops(out) == loops_in,
                 sj_in=metrics_in["scaled_jacobian"]["mean"], sj=sj["mean"],
                 inverted=m["inverted"], inverted_in=metrics_in["inverted"],
-                degenerate=m["degenerate"])
+                degenerate=m["degenerate"],
+                deviation=j["separatrix_deviation"]["max_deg"],
+                over_bound=j["separatrix_deviation"]["over_bound"])
             print("| %s | %g° | 0 | %d | %d | %.3f | %d | %.2f | %s | %s | %.3f | %.3f | %.3f "
-                  "| %.3f | %d (%d) | %d | %.1f |"
+                  "| %.3f | %d (%d) | %d | %.1f° (%.1f°) | %d | %.1f |"
                   % (name, angle, row["bc_in"], row["bc_out"], row["ratio"], singular,
                      row["per_singular"], "yes" if row["singularities"] else "**no**",
                      "yes" if row["loops"] else "**no**", row["sj_in"], sj["min"], sj["mean"],
                      sj["p5"], m["inverted"], metrics_in["inverted"], m["degenerate"],
-                     j["time"]["total_s"]))
+                     row["deviation"], j["separatrix_deviation"]["max_to_border_deg"],
+                     row["over_bound"], j["time"]["total_s"]))
             sys.stdout.flush()
 
     print()
     print("| angle | runs ok | median BC ratio | median patches per singular | median SJ mean in "
           "→ out | singularities kept | border loops kept | inverted beyond the input's "
-          "| bunny patches per singular |")
-    print("|" + "---|" * 9)
+          "| max deviation between singular | runs above the bound | bunny patches per singular |")
+    print("|" + "---|" * 11)
     for angle in angles:
         ok = [r for r in rows[angle] if r["ok"]]
         shared = [r for r in ok if r["name"] != BUNNY]
@@ -169,11 +173,13 @@ def main():
             return statistics.median(r[key] for r in shared) if shared else float("nan")
 
         bunny = [r for r in ok if r["name"] == BUNNY]
-        print("| %g° | %d of %d | %.3f | %.2f | %.3f → %.3f | %d | %d | %d | %s |"
+        print("| %g° | %d of %d | %.3f | %.2f | %.3f → %.3f | %d | %d | %d | %.1f° | %d | %s |"
               % (angle, len(ok), len(rows[angle]), median("ratio"), median("per_singular"),
                  median("sj_in"), median("sj"), sum(r["singularities"] for r in ok),
                  sum(r["loops"] for r in ok),
                  sum(max(0, r["inverted"] - r["inverted_in"]) for r in ok),
+                 max((r["deviation"] for r in ok), default=float("nan")),
+                 sum(r["over_bound"] > 0 for r in ok),
                  "%.2f" % bunny[0]["per_singular"] if bunny else "–"))
 
 

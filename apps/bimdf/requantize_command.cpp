@@ -15,6 +15,7 @@
 #include "bimdf/tmesh/collapse.hpp"
 #include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/requantize.hpp"
+#include "bimdf/tmesh/separatrix_deviation.hpp"
 #include "number_checks.hpp"
 #include "remesh_command.hpp"
 
@@ -411,6 +412,22 @@ int run_requantize(const RequantizeCommandOptions& o) {
   j["singularities_out"] = {{"inside", valences(out_metrics.interior_singularities)},
                             {"border", valences(out_metrics.boundary_singularities)}};
   j["base_complex_out"] = out_metrics.base_complex_faces;
+  if (have_mesh) {
+    const double bound =
+        ro.trace.max_angle_deg >= 0 && ro.trace.max_angle_deg < 90 ? ro.trace.max_angle_deg : -1;
+    const tmesh::SeparatrixDeviation d = tmesh::measure_separatrix_deviation(mesh, r, bound);
+    j["separatrix_deviation"] = {{"measured", d.measured},
+                                 {"unmeasured", d.unmeasured},
+                                 {"max_deg", d.max_deg},
+                                 {"max_to_border_deg", d.max_to_border_deg}};
+    if (bound >= 0) j["separatrix_deviation"]["over_bound"] = d.over_bound;
+    s << "deviation     " << significant(d.max_deg, 3)
+      << "° at most from the input's grid between singular vertices ("
+      << significant(d.max_to_border_deg, 3) << "° to the border) over " << d.measured
+      << (d.measured == 1 ? " separatrix" : " separatrices")
+      << (d.unmeasured ? ", " + std::to_string(d.unmeasured) + " not measured" : "")
+      << (bound >= 0 ? ", " + std::to_string(d.over_bound) + " above the bound" : "") << "\n";
+  }
   if (have_mesh) {
     const QuadMeshMetrics in_metrics = measure_quad_mesh(mesh);
     j["singularities_in"] = {{"inside", valences(in_metrics.interior_singularities)},

@@ -21,6 +21,7 @@
 #include "bimdf/quant/remesh_layout.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "bimdf/tmesh/requantize.hpp"
+#include "bimdf/tmesh/separatrix_deviation.hpp"
 #include "bindings.hpp"
 
 namespace bimdf::python {
@@ -430,6 +431,14 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   report["collapsed_patches"] = r.collapsed.collapsed_patches;
   report["irregular_patches"] = r.collapsed.irregular_patches;
   report["metrics"] = metrics_to_python(out_metrics);
+  const double bound =
+      ro.trace.max_angle_deg >= 0 && ro.trace.max_angle_deg < 90 ? ro.trace.max_angle_deg : -1;
+  const tmesh::SeparatrixDeviation d = tmesh::measure_separatrix_deviation(mesh, r, bound);
+  py::dict deviation(py::arg("measured") = d.measured, py::arg("unmeasured") = d.unmeasured,
+                     py::arg("max_deg") = d.max_deg,
+                     py::arg("max_to_border_deg") = d.max_to_border_deg);
+  if (bound >= 0) deviation["over_bound"] = d.over_bound;
+  report["separatrix_deviation"] = deviation;
   report["time"] = py::dict(
       py::arg("trace_s") = r.time_trace_s, py::arg("quantize_s") = r.time_quantize_s,
       py::arg("collapse_s") = r.time_collapse_s, py::arg("smoothing_s") = r.time_smoothing_s,

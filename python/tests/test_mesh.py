@@ -143,6 +143,8 @@ def test_requantize_equals_the_cli(bunny_remeshed, tmp_path):
         assert report.get("feature_traces") == cli_report.get("feature_traces")
         assert ("feature_traces" in report) == ("max_angle" in kwargs)
         assert_same_numbers(report["metrics"], cli_report["metrics"])
+        assert report["separatrix_deviation"] == cli_report["separatrix_deviation"]
+        assert ("over_bound" in report["separatrix_deviation"]) == ("max_angle" in kwargs)
 
 
 def test_metrics_equal_the_cli(bunny_remeshed):

@@ -91,7 +91,8 @@ using detail::UnionFind;
 CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& incidence,
                                       const std::vector<int64_t>& arc_length, const QuadMesh* mesh,
                                       bool allow_irregular, const std::vector<Zip>& zips) {
-  Collapser c{tmesh, incidence, arc_length, mesh, {}, {}, {}, 0, {}, {}, allow_irregular, {}, {}};
+  Collapser c{tmesh, incidence, arc_length,      mesh, {}, {}, {}, 0, {},
+              {},    {},        allow_irregular, {},   {}};
   c.check_input();
   c.number_points();
   const int np = tmesh.num_patches();
@@ -194,11 +195,28 @@ CollapsedMesh collapse_and_tessellate(const TMesh& tmesh, const TMeshIncidence& 
   // Positions: every point's own, then each vertex at the mean of its points.
   if (mesh && !zips.empty()) c.zipped.emplace(tmesh, arc_length, zips);
   c.place_vertices_and_arcs();
+  c.grid_uv.resize(np);
   for (int p = 0; p < np; ++p)
     if (c.irregular(p))
       c.place_irregular_interior(p);
     else if (!c.grid[p].empty())
       c.place_patch_interior(p);
+  if (mesh) {
+    result.quad_grid_uv.assign(out.num_quads(), {});
+    for (int q = 0; q < out.num_quads(); ++q) {
+      const int p = out.quad_patch[q];
+      if (c.grid_uv[p].empty() || c.irregular(p)) {
+        result.quad_grid_uv[q].fill({-1, -1});
+        continue;
+      }
+      const auto [i, j] = quad_cell[q];
+      const int64_t W = c.size[p][0];
+      const std::array<std::array<int, 2>, 4> corner{
+          {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}};
+      for (int k = 0; k < 4; ++k)
+        result.quad_grid_uv[q][k] = c.grid_uv[p][size_t(corner[k][1]) * (W + 1) + corner[k][0]];
+    }
+  }
   const int nv = out.num_vertices();
   std::vector<int> class_size(nv, 0);
   std::vector<std::vector<int>> vertex_arcs(tmesh.num_vertices());

@@ -151,40 +151,61 @@ void Collapser::shift_sides_off_zips(int p, const std::array<std::vector<Vec2>, 
   }
 }
 
-// Interior grid points of a non-degenerate patch: a Coons patch over its sides, in the input
-// grid's coordinates (then bilinear on the input quad there) or in 3D; along zips, plus the
-// Coons patch of its sides' shifts.
+// Patch p's grid points' coordinates in its input grid, row by row ((W+1) · (H+1)): side
+// points at their side coordinates, corners at the mean of their two sides' (they differ where
+// zero arcs meet there), interior points on the Coons patch over the sides; along zips, plus
+// the Coons patch of the sides' shifts (side_shifts; empty: none).
+std::vector<Vec2> Collapser::grid_coordinates(int p,
+                                              const std::array<std::vector<Vec2>, 4>& shift) const {
+  const int W = static_cast<int>(size[p][0]), H = static_cast<int>(size[p][1]);
+  std::vector<Vec2> bottom(W + 1), top(W + 1), left(H + 1), right(H + 1);
+  for (int i = 0; i <= W; ++i)
+    bottom[i] = side_coordinate(p, 0, i), top[i] = side_coordinate(p, 2, W - i);
+  for (int j = 0; j <= H; ++j)
+    right[j] = side_coordinate(p, 1, j), left[j] = side_coordinate(p, 3, H - j);
+  if (!shift[0].empty()) {
+    const auto add = [](Vec2& a, const Vec2& d) { a = {a[0] + d[0], a[1] + d[1]}; };
+    for (int i = 0; i <= W; ++i) add(bottom[i], shift[0][i]), add(top[i], shift[2][W - i]);
+    for (int j = 0; j <= H; ++j) add(right[j], shift[1][j]), add(left[j], shift[3][H - j]);
+  }
+  std::vector<Vec2> uv(size_t(W + 1) * (H + 1));
+  const auto at = [&](int i, int j) -> Vec2& { return uv[size_t(j) * (W + 1) + i]; };
+  for (int j = 0; j <= H; ++j)
+    for (int i = 0; i <= W; ++i) {
+      const bool side_i = i == 0 || i == W, side_j = j == 0 || j == H;
+      if (side_i && side_j) {
+        const Vec2& a = j == 0 ? bottom[i] : top[i];
+        const Vec2& b = i == 0 ? left[j] : right[j];
+        at(i, j) = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2};
+      } else if (side_j) {
+        at(i, j) = j == 0 ? bottom[i] : top[i];
+      } else if (side_i) {
+        at(i, j) = i == 0 ? left[j] : right[j];
+      } else {
+        at(i, j) = coons(bottom, top, left, right, i, j);
+      }
+    }
+  return uv;
+}
+
+// Interior grid points of a non-degenerate patch: at their grid coordinates (grid_coordinates,
+// kept in grid_uv for CollapsedMesh::quad_grid_uv), evaluated on the input quad there — or,
+// without a grid, a Coons patch in 3D.
 void Collapser::place_patch_interior(int p) {
   const int W = static_cast<int>(size[p][0]), H = static_cast<int>(size[p][1]);
   const std::array<std::vector<Vec2>, 4> shift = side_shifts(p);
   if (!shift[0].empty()) shift_sides_off_zips(p, shift);
-  if (W < 2 || H < 2) return;
   const std::vector<int>& ids = grid[p];
   const auto id = [&](int i, int j) { return ids[size_t(j) * (W + 1) + i]; };
   if (has_grid(p)) {
-    std::vector<Vec2> bottom(W + 1), top(W + 1), left(H + 1), right(H + 1);
-    for (int i = 0; i <= W; ++i)
-      bottom[i] = side_coordinate(p, 0, i), top[i] = side_coordinate(p, 2, W - i);
-    for (int j = 0; j <= H; ++j)
-      right[j] = side_coordinate(p, 1, j), left[j] = side_coordinate(p, 3, H - j);
-    std::vector<Vec2> bottom_d, top_d, left_d, right_d;
-    if (!shift[0].empty()) {
-      for (int i = 0; i <= W; ++i)
-        bottom_d.push_back(shift[0][i]), top_d.push_back(shift[2][W - i]);
-      for (int j = 0; j <= H; ++j)
-        right_d.push_back(shift[1][j]), left_d.push_back(shift[3][H - j]);
-    }
+    grid_uv[p] = grid_coordinates(p, shift);
     for (int j = 1; j < H; ++j)
-      for (int i = 1; i < W; ++i) {
-        Vec2 uv = coons(bottom, top, left, right, i, j);
-        if (!bottom_d.empty()) {
-          const Vec2 d = coons(bottom_d, top_d, left_d, right_d, i, j);
-          uv = {uv[0] + d[0], uv[1] + d[1]};
-        }
-        point_position[id(i, j)] = detail::point_on_grid(*mesh, tm.patch_grid[p], uv);
-      }
+      for (int i = 1; i < W; ++i)
+        point_position[id(i, j)] =
+            detail::point_on_grid(*mesh, tm.patch_grid[p], grid_uv[p][size_t(j) * (W + 1) + i]);
     return;
   }
+  if (W < 2 || H < 2) return;
   // Without a grid: the mean position of the points at each side position.
   const auto side_positions = [&](int k) {
     const int64_t length = size[p][k % 2];

@@ -64,6 +64,8 @@ struct Collapser {
   // Per non-degenerate patch: point ids, (W+1) × (H+1) — or, for an irregular patch, one per
   // vertex of its pattern.
   std::vector<std::vector<int>> grid;
+  // Per non-degenerate patch with a grid: grid_coordinates of its grid points (else empty).
+  std::vector<std::vector<Vec2>> grid_uv;
   bool allow_irregular = false;
   std::vector<quant::QuadPattern> pattern;     // per patch: its pattern if irregular (else empty)
   std::optional<detail::ZipPlacement> zipped;  // with zips and a mesh
@@ -113,6 +115,7 @@ struct Collapser {
   void number_points();
   void place_vertices_and_arcs();
   void place_patch_interior(int p);
+  std::vector<Vec2> grid_coordinates(int p, const std::array<std::vector<Vec2>, 4>& shift) const;
   std::array<std::vector<Vec2>, 4> side_shifts(int p) const;
   void shift_sides_off_zips(int p, const std::array<std::vector<Vec2>, 4>& shift);
   void place_irregular_interior(int p);

@@ -462,6 +462,13 @@ TEST_F(Requantize, CoarseLayoutKeepsSeparatricesAcrossFeatures) {
     EXPECT_EQ(j["base_complex_in"], 6);
     EXPECT_EQ(j["base_complex_out"], 6) << angle;
     EXPECT_EQ(j["singularities_out"]["inside"], json({{"3", 8}})) << angle;
+    // The cube's 12 edges, corner to corner, straight in the input's grid.
+    EXPECT_EQ(j["separatrix_deviation"], json({{"measured", 12},
+                                               {"unmeasured", 0},
+                                               {"max_deg", 0},
+                                               {"max_to_border_deg", 0},
+                                               {"over_bound", 0}}))
+        << angle;
     const QuadMeshMetrics m = measure_quad_mesh(output());
     EXPECT_EQ(m.inverted, 0) << angle;
     EXPECT_EQ(m.base_complex_faces, 6) << angle;

@@ -78,6 +78,11 @@ struct CollapsedMesh {
   int collapsed_patches = 0;            // patches with width or height 0
   int zero_arcs = 0;
   int irregular_patches = 0;  // patches tessellated by a pattern (allow_irregular only)
+  // With patch grids (a T-mesh traced on `mesh`): per quad, its corners' coordinates (u, v) in
+  // its patch's grid (PatchGrid: u along side 0, v along side 1, in input edges) as the
+  // tessellation placed them, before any smoothing; (−1, −1) for an irregular patch's quads or
+  // a patch without a grid. Empty without a mesh. What separatrix_deviation.hpp measures on.
+  std::vector<std::array<std::array<double, 2>, 4>> quad_grid_uv;
 };
 
 // Zips (half-arc quantization, half_arc.hpp): pairs of chains of border half-arcs of equal
