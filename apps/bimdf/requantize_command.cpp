@@ -15,7 +15,6 @@
 #include "bimdf/tmesh/collapse.hpp"
 #include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/requantize.hpp"
-#include "bimdf/tmesh/separatrix_deviation.hpp"
 #include "number_checks.hpp"
 #include "remesh_command.hpp"
 
@@ -281,6 +280,8 @@ int run_requantize(const RequantizeCommandOptions& o) {
     if (r.other_base_complex >= 0) other["base_complex"] = r.other_base_complex;
     if (r.other_base_complex >= 0 && r.other_failure.empty())
       other["scaled_jacobian_mean"] = r.other_scaled_jacobian_mean;
+    if (r.other_base_complex >= 0 && r.other_failure.empty() && ro.trace.max_angle_deg < 90)
+      other["over_bound"] = r.other_over_bound;
     if (!r.other_failure.empty()) other["failure"] = r.other_failure;
     if (!other.empty()) j["feature_traces_other"] = other;
   }
@@ -415,7 +416,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
   if (have_mesh) {
     const double bound =
         ro.trace.max_angle_deg >= 0 && ro.trace.max_angle_deg < 90 ? ro.trace.max_angle_deg : -1;
-    const tmesh::SeparatrixDeviation d = tmesh::measure_separatrix_deviation(mesh, r, bound);
+    const tmesh::SeparatrixDeviation& d = r.deviation;  // measured against `bound`
     j["separatrix_deviation"] = {{"measured", d.measured},
                                  {"unmeasured", d.unmeasured},
                                  {"max_deg", d.max_deg},

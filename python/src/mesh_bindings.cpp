@@ -21,7 +21,6 @@
 #include "bimdf/quant/remesh_layout.hpp"
 #include "bimdf/quant/tessellate.hpp"
 #include "bimdf/tmesh/requantize.hpp"
-#include "bimdf/tmesh/separatrix_deviation.hpp"
 #include "bindings.hpp"
 
 namespace bimdf::python {
@@ -411,6 +410,8 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
     if (r.other_base_complex >= 0) other["base_complex"] = r.other_base_complex;
     if (r.other_base_complex >= 0 && r.other_failure.empty())
       other["scaled_jacobian_mean"] = r.other_scaled_jacobian_mean;
+    if (r.other_base_complex >= 0 && r.other_failure.empty() && ro.trace.max_angle_deg < 90)
+      other["over_bound"] = r.other_over_bound;
     if (!r.other_failure.empty()) other["failure"] = r.other_failure;
     if (!other.empty()) report["feature_traces_other"] = other;
   }
@@ -433,7 +434,7 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   report["metrics"] = metrics_to_python(out_metrics);
   const double bound =
       ro.trace.max_angle_deg >= 0 && ro.trace.max_angle_deg < 90 ? ro.trace.max_angle_deg : -1;
-  const tmesh::SeparatrixDeviation d = tmesh::measure_separatrix_deviation(mesh, r, bound);
+  const tmesh::SeparatrixDeviation& d = r.deviation;  // measured against `bound`
   py::dict deviation(py::arg("measured") = d.measured, py::arg("unmeasured") = d.unmeasured,
                      py::arg("max_deg") = d.max_deg,
                      py::arg("max_to_border_deg") = d.max_to_border_deg);

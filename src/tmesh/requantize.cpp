@@ -13,6 +13,7 @@
 
 #include "bimdf/error.hpp"
 #include "bimdf/metrics.hpp"
+#include "bimdf/tmesh/separatrix_deviation.hpp"
 #include "core/stopwatch.hpp"
 #include "tmesh/density_search.hpp"
 #include "tmesh/separation_repair.hpp"
@@ -144,12 +145,17 @@ RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop,
   if (stop.collapsed.mesh.quads.empty()) return cross;
   const QuadMeshMetrics a = measure_quad_mesh(cross.collapsed.mesh);
   const QuadMeshMetrics b = measure_quad_mesh(stop.collapsed.mesh);
-  const bool keep_stop = cross.collapsed.mesh.quads.empty() || prefer_coarser_layout(b, a, slack);
+  // The angle bound is the user's: a coarser layout that breaks it on more separatrices does
+  // not win (traces ending at feature curves leave the seeds beyond a curve free to slide).
+  const bool keep_stop = cross.collapsed.mesh.quads.empty() ||
+                         (prefer_coarser_layout(b, a, slack) &&
+                          stop.deviation.over_bound <= cross.deviation.over_bound);
   RequantizeResult& kept = keep_stop ? stop : cross;
   const RequantizeResult& other = keep_stop ? cross : stop;
   const QuadMeshMetrics& other_metrics = keep_stop ? a : b;
   kept.other_base_complex = other_metrics.base_complex_faces;
   kept.other_scaled_jacobian_mean = other_metrics.scaled_jacobian_mean;
+  kept.other_over_bound = other.deviation.over_bound;
   add_times(kept, other);
   return std::move(kept);
 }
@@ -499,6 +505,10 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     // The input keeps the calibrated targets too (its arcs are T''s first ones).
     for (int a = 0; a < r.traced.tmesh.num_arcs(); ++a)
       r.traced.tmesh.arc_target[a] = tm.arc_target[a];
+  }
+  if (on_mesh && !r.collapsed.mesh.quads.empty()) {
+    const double bound = options.trace.max_angle_deg;
+    r.deviation = measure_separatrix_deviation(*mesh, r, bound >= 0 && bound < 90 ? bound : -1);
   }
   return r;
 }

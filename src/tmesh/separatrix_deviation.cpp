@@ -83,6 +83,8 @@ class DeviationWalker {
             }
         }
     }
+    singular_.assign(topo_.num_vertices(), 0);
+    for (int m = 0; m < topo_.num_vertices(); ++m) singular_[m] = is_singular(m);
     seen_.assign(input.num_quads(), 0);
     from_.assign(input.num_quads(), -1);
   }
@@ -115,7 +117,13 @@ class DeviationWalker {
 
   // The map from quad a's square to quad b's along a shortest way through quads of the
   // `patches` (and a, b; nullptr: any quads); false when none is found within kMaxSearch quads.
-  bool transport(int a, int b, const std::vector<int>* patches, RigidMap& map) {
+  // Going round a singular vertex turns the frame (a doublet's valence-2 vertex by half a turn),
+  // so which side a way passes one on changes the result — but not for a place at that vertex,
+  // which stays where it is under the turn. With `pivot` ≥ 0 (the singular input vertex both
+  // places stand at), `only_pivot` keeps the way to edges at the pivot, and `avoid_singular`
+  // keeps it off edges at any other singular vertex.
+  bool transport(int a, int b, const std::vector<int>* patches, int pivot, bool only_pivot,
+                 bool avoid_singular, RigidMap& map) {
     map = {};
     if (a == b) return true;
     ++stamp_;
@@ -130,6 +138,10 @@ class DeviationWalker {
       for (int k = 0; k < 4; ++k) {
         const int o = topo_.opposite(4 * f + k);
         if (o < 0) continue;
+        const int u = topo_.tail(4 * f + k), w = topo_.head(4 * f + k);
+        const bool at_pivot = u == pivot || w == pivot;
+        if (only_pivot && !at_pivot) continue;
+        if (avoid_singular && !at_pivot && (singular_[u] || singular_[w])) continue;
         const int g = QuadMeshTopology::face(o);
         if (seen_[g] == stamp_ || !allowed(g)) continue;
         seen_[g] = stamp_, from_[g] = o;
@@ -161,6 +173,7 @@ class DeviationWalker {
   std::vector<int> quad_patch_;
   std::vector<std::vector<int>>
       cell_half_edge_;  // per patch, per cell: its half-edge (i,j)→(i+1,j)
+  std::vector<char> singular_;  // per input vertex
   std::vector<int> seen_, from_;
   int stamp_ = 0;
 };
@@ -185,14 +198,14 @@ SeparatrixDeviation measure_separatrix_deviation(const QuadMesh& input, const TM
   const QuadMeshTopology topo(out, "<requantized mesh>");
   DeviationWalker walker(input, tmesh);
   const auto singular = [&](int v) { return topo.is_used(v) && !topo.is_regular(v); };
-  // The singular input vertex merged into output vertex v, as a place (quad −1: none).
-  const auto singular_place = [&](int v) {
+  // The singular input vertex merged into output vertex v (−1: none).
+  const auto singular_input_vertex = [&](int v) {
     for (int t : collapsed.origin[v].tmesh_vertices) {
       const int m =
           t < static_cast<int>(tmesh.vertex_mesh_vertex.size()) ? tmesh.vertex_mesh_vertex[t] : -1;
-      if (walker.is_singular(m)) return walker.place_of_vertex(m);
+      if (walker.is_singular(m)) return m;
     }
-    return Place{};
+    return -1;
   };
   std::vector<char> traced(topo.num_edges(), 0);
   const double bound = bound_deg < 0 ? -1 : bound_deg + 1e-9;
@@ -203,22 +216,30 @@ SeparatrixDeviation measure_separatrix_deviation(const QuadMesh& input, const TM
       // Walk state: the quad we stand in, the map from its square to the start's, where the
       // start is, and the output's axis there.
       bool ok = !collapsed.quad_grid_uv.empty();
-      Place start = singular_place(s), here = start;
+      const int start_vertex = singular_input_vertex(s);
+      Place start = start_vertex >= 0 ? walker.place_of_vertex(start_vertex) : Place{};
+      Place here = start;
       RigidMap to_start;
       Vec2 axis{0, 0}, last{0, 0};
       bool have_start = start.quad >= 0;
-      const auto move_to = [&](const Place& to, const std::vector<int>& patches) {
+      const auto move_to = [&](const Place& to, const std::vector<int>& patches, int pivot = -1) {
         if (!ok || to.quad < 0) return ok = false;
         if (here.quad < 0) {  // the first place: the frame starts here
           here = to, to_start = {}, start = to, last = to.x;
           return true;
         }
         RigidMap map;
-        // Two-gons cut the T-mesh open (half-arc quantization): places a zip joined may lie
-        // apart along the line, past the patches of the vertex — then the shortest way.
-        if (!walker.transport(here.quad, to.quad, &patches, map) &&
-            !walker.transport(here.quad, to.quad, nullptr, map))
-          return ok = false;
+        // The safest way first (see transport): round the pivot only, then away from other
+        // singular vertices, then through the vertex's patches, then anywhere — two-gons cut
+        // the T-mesh open (half-arc quantization), and places a zip joined may lie apart along
+        // the line, past the patches of the vertex.
+        const bool found =
+            (pivot >= 0 &&
+             walker.transport(here.quad, to.quad, nullptr, pivot, true, false, map)) ||
+            walker.transport(here.quad, to.quad, &patches, pivot, false, true, map) ||
+            walker.transport(here.quad, to.quad, &patches, pivot, false, false, map) ||
+            walker.transport(here.quad, to.quad, nullptr, pivot, false, false, map);
+        if (!found) return ok = false;
         to_start = to_start.after(map.inverse());
         here = to;
         last = to_start(to.x);
@@ -240,7 +261,7 @@ SeparatrixDeviation measure_separatrix_deviation(const QuadMesh& input, const TM
         const Place tail = walker.place_in_patch(p, collapsed.quad_grid_uv[q][k], quarters);
         std::vector<int> patches = collapsed.origin[from].patches;
         patches.push_back(p);
-        if (!move_to(tail, patches)) break;
+        if (!move_to(tail, patches, from == s ? start_vertex : -1)) break;
         // The output edge runs along patch axis k (0: +u, 1: +v, 2: −u, 3: −v).
         const Vec2 along = turn(turn(kDirection[k], quarters), to_start.quarters);
         if (axis == Vec2{0, 0}) axis = along;
@@ -258,8 +279,9 @@ SeparatrixDeviation measure_separatrix_deviation(const QuadMesh& input, const TM
         from = to, e = next;
       }
       if (ok && singular(to)) {
-        const Place end = singular_place(to);
-        if (end.quad >= 0) move_to(end, collapsed.origin[to].patches);
+        const int end_vertex = singular_input_vertex(to);
+        if (end_vertex >= 0)
+          move_to(walker.place_of_vertex(end_vertex), collapsed.origin[to].patches, end_vertex);
       }
       if (!ok) {
         ++result.unmeasured;

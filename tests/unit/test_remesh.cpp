@@ -602,8 +602,9 @@ TEST_F(RemeshCli, FeatureOutIsWhatRequantizeReads) {
   EXPECT_NE(nlohmann::json::parse(r.out)["seeds"], j["seeds"]);
 
   // --feature-traces: auto keeps the run with traces ending at the curves exactly when its base
-  // complex is smaller, it has no more inverted or degenerate quads and a mean scaled Jacobian at
-  // most 0.05 lower (prefer_coarser_layout), and reports the other run.
+  // complex is smaller, it has no more inverted or degenerate quads, a mean scaled Jacobian at
+  // most 0.05 lower (prefer_coarser_layout) and no more separatrices above the angle bound, and
+  // reports the other run.
   std::map<std::string, nlohmann::json> run_with;
   for (const std::string mode : {"cross", "stop", "auto"}) {
     r = run("requantize " + path("m.obj") + " --feature " + path("m.feature") +
@@ -623,13 +624,18 @@ TEST_F(RemeshCli, FeatureOutIsWhatRequantizeReads) {
   const auto mean = [](const nlohmann::json& x) {
     return x["metrics"]["scaled_jacobian"]["mean"].get<double>();
   };
+  const auto over = [](const nlohmann::json& x) {
+    return x["separatrix_deviation"]["over_bound"].get<int>();
+  };
   const bool stop_wins = stop["base_complex_out"] < cross["base_complex_out"] &&
-                         bad(stop) <= bad(cross) && mean(stop) >= mean(cross) - 0.05;
+                         bad(stop) <= bad(cross) && mean(stop) >= mean(cross) - 0.05 &&
+                         over(stop) <= over(cross);
   const auto& winner = stop_wins ? stop : cross;
   const auto& loser = stop_wins ? cross : stop;
   EXPECT_EQ(chosen["feature_traces"], winner["feature_traces"]);
   EXPECT_EQ(chosen["base_complex_out"], winner["base_complex_out"]);
   EXPECT_EQ(chosen["feature_traces_other"]["base_complex"], loser["base_complex_out"]);
+  EXPECT_EQ(chosen["feature_traces_other"]["over_bound"], over(loser));
   // auto is the default with --coarse: the first run above, without the option, is this one.
   EXPECT_EQ(j["feature_traces"], chosen["feature_traces"]);
   EXPECT_EQ(j["base_complex_out"], chosen["base_complex_out"]);

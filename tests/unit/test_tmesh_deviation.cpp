@@ -55,6 +55,25 @@ TEST(TMeshDeviation, NothingMovedMeansNoDeviation) {
   for (const auto& s : d.separatrices) EXPECT_FALSE(s.to_border);
 }
 
+// The same on random meshes (singular vertices of valence 3, 5, 6 and more, border corners): the
+// identity quantization measures every separatrix, each at 0°.
+TEST(TMeshDeviation, NothingMovedOnRandomMeshes) {
+  for (uint64_t seed = 0; seed < 12; ++seed) {
+    std::string description;
+    const QuadMesh mesh = test::random_quad_mesh(seed, &description);
+    RequantizeOptions o;
+    o.smoothing.iterations = 0;
+    const RequantizeResult r = requantize(mesh, o, "random");
+    ASSERT_EQ(r.quantization.objective, 0) << description;  // every arc at its input length
+    ASSERT_EQ(r.collapsed.mesh.num_quads(), mesh.num_quads()) << description;
+    const SeparatrixDeviation& d = r.deviation;
+    EXPECT_GT(d.measured, 0) << description;
+    EXPECT_EQ(d.unmeasured, 0) << description;
+    EXPECT_EQ(d.max_deg, 0) << description;
+    EXPECT_EQ(d.max_to_border_deg, 0) << description;
+  }
+}
+
 // The staircase's reflex corners A = (3, 3) and B = (7, 4) lie at offset (4, 1): 14.04°. A
 // coarse layout at 45° may join them by one straight line (its traces allow it from 14.04° on);
 // every separatrix between singular vertices is compared with the plane's own displacement

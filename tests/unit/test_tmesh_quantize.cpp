@@ -398,10 +398,10 @@ TEST(TMeshQuantize, PreferCoarserLayoutOnlyWhenItsQuadsHold) {
   EXPECT_FALSE(prefer_coarser_layout(coarse, fine, 0.05));
 }
 
-// requantize with FeatureTraces::Auto is the run prefer_coarser_layout picks of Cross and Stop,
-// on random meshes with feature curves (coarse, 45°; there crossing always wins — the bundled
-// bunny, where ending wins, is RemeshCli.FeatureOutIsWhatRequantizeReads); without features,
-// one run.
+// requantize with FeatureTraces::Auto is the run prefer_coarser_layout picks of Cross and Stop
+// (Stop only with no more separatrices above the angle bound), on random meshes with feature curves
+// (coarse, 45°; there crossing always wins — the bundled bunny, where ending wins, is
+// RemeshCli.FeatureOutIsWhatRequantizeReads); without features, one run.
 TEST(TMeshQuantize, AutoFeatureTracesKeepTheRunTheRulePicks) {
   int compared = 0, stopped = 0;
   for (uint64_t seed = 0; seed < 24; ++seed) {
@@ -428,13 +428,16 @@ TEST(TMeshQuantize, AutoFeatureTracesKeepTheRunTheRulePicks) {
     EXPECT_EQ(stop.traced.feature_traces, "stop");
     const bool stop_wins = prefer_coarser_layout(measure_quad_mesh(stop.collapsed.mesh),
                                                  measure_quad_mesh(cross.collapsed.mesh), 0.05);
-    stopped += stop_wins;
-    const RequantizeResult& winner = stop_wins ? stop : cross;
-    const RequantizeResult& loser = stop_wins ? cross : stop;
+    const bool within = stop.deviation.over_bound <= cross.deviation.over_bound;
+    stopped += stop_wins && within;
+    const RequantizeResult& winner = stop_wins && within ? stop : cross;
+    const RequantizeResult& loser = stop_wins && within ? cross : stop;
     EXPECT_EQ(chosen.traced.feature_traces, winner.traced.feature_traces) << seed;
     EXPECT_EQ(chosen.collapsed.mesh.quads, winner.collapsed.mesh.quads) << seed;
     EXPECT_EQ(chosen.other_base_complex, measure_quad_mesh(loser.collapsed.mesh).base_complex_faces)
         << seed;
+    EXPECT_EQ(chosen.other_over_bound, loser.deviation.over_bound) << seed;
+    EXPECT_EQ(chosen.deviation.over_bound, winner.deviation.over_bound) << seed;
   }
   std::cout << compared << " meshes with feature curves, " << stopped << " kept ending there\n";
   EXPECT_GE(compared, 4);

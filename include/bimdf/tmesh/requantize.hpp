@@ -14,6 +14,7 @@
 #include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/half_arc.hpp"
 #include "bimdf/tmesh/quantize.hpp"
+#include "bimdf/tmesh/separatrix_deviation.hpp"
 
 namespace bimdf::tmesh {
 
@@ -128,10 +129,15 @@ struct RequantizeResult {
   // both runs.
   int other_base_complex = -1;
   double other_scaled_jacobian_mean = 0;
+  int other_over_bound = 0;   // the other run's deviation.over_bound
   std::string other_failure;  // or why it was given up (give_up_at_base_complex)
   // With give_up_at_base_complex: the base complex the run stopped at before smoothing (its
   // collapsed mesh is then unsmoothed); 0 when it went on.
   int given_up_at_base_complex = 0;
+  // With a mesh (patch grids): the output's separatrices measured against the input's grid
+  // (separatrix_deviation.hpp), over_bound against options.trace.max_angle_deg when it is in
+  // [0, 90).
+  SeparatrixDeviation deviation;
   double time_trace_s = 0, time_quantize_s = 0, time_collapse_s = 0, time_smoothing_s = 0;
 };
 
@@ -143,9 +149,11 @@ bool prefer_coarser_layout(const QuadMeshMetrics& coarser, const QuadMeshMetrics
                            double slack);
 
 // FeatureTraces::Auto's last step, for two requantizations of one mesh traced with
-// cross_features true (`cross`) and false (`stop`): the one prefer_coarser_layout(stop, cross,
-// slack) picks (a run without a mesh loses), with the other's base complex and mean scaled
-// Jacobian (RequantizeResult::other_*) and both runs' times added up.
+// cross_features true (`cross`) and false (`stop`): `stop` when prefer_coarser_layout(stop,
+// cross, slack) picks it and it has no more separatrices above the angle bound
+// (deviation.over_bound) than `cross`, else `cross` (a run without a mesh loses), with the
+// other's base complex, mean scaled Jacobian and separatrices above the bound
+// (RequantizeResult::other_*) and both runs' times added up.
 RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop, double slack);
 
 // FeatureTraces::Auto after a first run `cross` of `mesh` (traced with cross_features true, and
