@@ -57,6 +57,11 @@
 //       90° sector), or the whole trace if there is none;
 //   (2) when max_angle_deg < 90, for every crossing with l_ji > tan α · l_ij: t_j from j to
 //       n_ij (else seed j could slide onto t_i's line, turning it by more than α);
+//   (2 on curves, ours) (2) with a border or feature curve from seed i in place of t_i: where
+//     t_j reaches the curve path (3) from i, q edges from i, after p edges: with p > tan α · q,
+//     t_j from j to the curve; with q > tan α · p, the curve path from i to that vertex (no
+//     trace runs along a curve, so (2) alone let seeds on curves meet at more than α: elk at
+//     20° had two joined at 26.6°, measured by tmesh/separatrix_deviation.hpp);
 //   (3, ours) from every seed along every border or feature edge, straight on along that curve
 //     to the next seed (without it a mesh whose curves leave no trace could collapse whole);
 //   (4, ours) every piece of a trace from one curve it reaches (border or feature) to the

@@ -453,6 +453,28 @@ TEST(TmeshAngle, CurvePathsKeepAFeatureOnlyMeshApart) {
   EXPECT_EQ(check_graph(p, g), "");
 }
 
+// A feature curve along y = 3 from (2, 3) to (8, 3) (its ends are seeds) and the reflex corner
+// J = (5, 5) of a removed block, whose trace runs down across the curve at (5, 3): 2 edges from
+// J, 3 along the curve from either end. (2) against curves: below atan(3/2) = 56.3° the curve's
+// ends may not slide onto J's line (their curve paths up to (5, 3) are paths of their own).
+// (J's path down to the curve is a path at every angle here: (4), J being on the border.)
+TEST(TmeshAngle, SeedsKeepTheirAngleToFeatureCurves) {
+  const Blocks b = grid_without(12, 8, {{0, 5, 5, 8}});
+  Prepared p = prepare(b.mesh, 180);
+  for (int x = 2; x < 8; ++x) p.feature[p.topo->find_edge(b.at(x, 3), b.at(x + 1, 3))] = 1;
+  p.seeds = seed_vertices(*p.topo, p.feature);
+  const std::vector<int> j_down{b.at(5, 5), b.at(5, 4), b.at(5, 3)};
+  const std::vector<int> from_east{b.at(8, 3), b.at(7, 3), b.at(6, 3), b.at(5, 3)};
+  const std::vector<int> from_west{b.at(2, 3), b.at(3, 3), b.at(4, 3), b.at(5, 3)};
+  for (double angle : {30.0, 40.0, 50.0, 60.0}) {
+    const AngleBoundedGraph g = trace(p, angle);
+    EXPECT_EQ(check_graph(p, g), "") << angle;
+    EXPECT_TRUE(has_chain(g, j_down)) << angle;
+    EXPECT_EQ(has_chain(g, from_east), angle < 56.3) << angle;
+    EXPECT_EQ(has_chain(g, from_west), angle < 56.3) << angle;
+  }
+}
+
 TEST(TmeshAngle, RejectsBadArguments) {
   const Prepared p = prepare(test::grid_mesh(2, 2), 180);
   EXPECT_THROW(trace_angle_bounded(*p.topo, {}, p.seeds, 10), std::invalid_argument);
