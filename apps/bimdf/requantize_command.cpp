@@ -90,9 +90,11 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
                   "falls back to `fitted` where that leaves inverted quads that fitted lengths "
                   "do not; `fitted` solves again for lengths at that density with the zero "
                   "arcs kept (better quads, but separatrices drift apart and the base complex "
-                  "grows); `strict-uniform`: uniform, never refitted")
+                  "grows); `strict-uniform`: uniform, never refitted; `strips`: one integer per "
+                  "strip of the coarse layout, fitted to the input's size along it (the same "
+                  "base complex, closer to the input's quads), refitted as uniform is")
       ->default_val("uniform")
-      ->check(CLI::IsMember({"fitted", "uniform", "strict-uniform"}));
+      ->check(CLI::IsMember({"fitted", "uniform", "strict-uniform", "strips"}));
   cmd->add_option("--half-arc", o.half_arc,
                   "Half-arc quantization (paper §4.3): the two sides of every non-zero path "
                   "that crosses no other (alone, or overlapping one other along its line) "
@@ -185,7 +187,8 @@ int run_requantize(const RequantizeCommandOptions& o) {
       o.cost == "abs" ? tmesh::DeviationCost::Absolute : tmesh::DeviationCost::Quadratic;
   ro.quantize.coarse = o.coarse;
   ro.quantize.coarse_uniform = o.coarse_lengths != "fitted";
-  ro.refit_uniform = o.coarse_lengths == "uniform";
+  ro.quantize.coarse_strips = o.coarse_lengths == "strips";
+  ro.refit_uniform = o.coarse_lengths == "uniform" || o.coarse_lengths == "strips";
   ro.quantize.relaxed = o.relaxed;
   const std::string half_arc = tmesh::set_half_arc_mode(ro, o.half_arc, o.reorder_weight);
   ro.keep_crossings = o.keep_crossings;
@@ -341,7 +344,10 @@ int run_requantize(const RequantizeCommandOptions& o) {
   }
   if (o.coarse) j["coarse_objective"] = q.coarse_objective;
   if (o.coarse && q.coarse_factor > 0) j["coarse_factor"] = q.coarse_factor;
-  if (o.coarse) j["coarse_lengths"] = q.coarse_factor > 0 ? "uniform" : "fitted";
+  if (o.coarse)
+    j["coarse_lengths"] = q.coarse_factor <= 0        ? "fitted"
+                          : ro.quantize.coarse_strips ? "strips"
+                                                      : "uniform";
   if (r.coarse_refitted)
     std::cerr << "note: uniform coarse lengths left quads inverted that no split reached; "
                  "the lengths were fitted instead (the base complex grows; "

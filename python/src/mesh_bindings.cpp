@@ -329,8 +329,9 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   if (cost != "quadratic" && cost != "abs")
     throw py::value_error("cost must be 'quadratic' or 'abs', got '" + cost + "'");
   if (coarse_lengths != "uniform" && coarse_lengths != "fitted" &&
-      coarse_lengths != "strict-uniform")
-    throw py::value_error("coarse_lengths must be 'uniform', 'fitted' or 'strict-uniform'");
+      coarse_lengths != "strict-uniform" && coarse_lengths != "strips")
+    throw py::value_error(
+        "coarse_lengths must be 'uniform', 'fitted', 'strict-uniform' or 'strips'");
   if (max_angle && !(*max_angle >= 0 && *max_angle <= 90))
     throw py::value_error("max_angle must be in [0, 90]");
   if (!(sharp_angle >= 0 && sharp_angle <= 180))
@@ -346,7 +347,8 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
       cost == "abs" ? tmesh::DeviationCost::Absolute : tmesh::DeviationCost::Quadratic;
   ro.quantize.coarse = coarse;
   ro.quantize.coarse_uniform = coarse_lengths != "fitted";
-  ro.refit_uniform = coarse_lengths == "uniform";
+  ro.quantize.coarse_strips = coarse_lengths == "strips";
+  ro.refit_uniform = coarse_lengths == "uniform" || coarse_lengths == "strips";
   ro.quantize.relaxed = relaxed;
   ro.quantize.relaxed_weight = relaxed_weight;
   std::string half_arc_used;
@@ -420,7 +422,10 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
     report["reordered_junctions"] = r.reordered_junctions;
     report["aligned_two_gons"] = r.aligned_two_gons;
   }
-  if (coarse) report["coarse_lengths"] = q.coarse_factor > 0 ? "uniform" : "fitted";
+  if (coarse)
+    report["coarse_lengths"] = q.coarse_factor <= 0        ? "fitted"
+                               : ro.quantize.coarse_strips ? "strips"
+                                                           : "uniform";
   report["density"] = ro.trace.density;
   if (ro.target_quads > 0) {
     report["target_quads"] = ro.target_quads;

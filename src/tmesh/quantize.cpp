@@ -10,6 +10,7 @@
 #include "bimdf/solve.hpp"
 #include "core/stopwatch.hpp"
 #include "tmesh/quantize_stages.hpp"
+#include "tmesh/strip_lengths.hpp"
 
 namespace bimdf::tmesh {
 namespace {
@@ -81,6 +82,14 @@ void run_quantization(const TMesh& tmesh, const TMeshIncidence& incidence,
     // complex, stay exactly those of the coarse stage; k brings the area (Σ width × height)
     // closest to the targets' area.
     result.coarse_objective = result.objective;
+    if (options.coarse_strips) {
+      double mean = 0;
+      result.arc_length =
+          strip_refined_lengths(tmesh, result.arc_length, model_options.two_gons, &mean);
+      result.coarse_factor = std::max<int64_t>(1, std::llround(mean));
+      for (int64_t x : result.arc_length) result.zero_arcs += x == 0;
+      return;
+    }
     const double area = quantized_quads(tmesh, result.arc_length);
     const double target_area = target_quads(tmesh);
     const int64_t k =

@@ -62,8 +62,7 @@ struct Place {
 
 class DeviationWalker {
  public:
-  DeviationWalker(const QuadMesh& input, const TMesh& tmesh)
-      : input_(input), tm_(tmesh), topo_(input, "<input>") {
+  DeviationWalker(const QuadMesh& input, const TMesh& tmesh) : tm_(tmesh), topo_(input, "<input>") {
     quad_patch_.assign(input.num_quads(), -1);
     cell_half_edge_.resize(tmesh.num_patches());
     for (int p = 0; p < tmesh.num_patches(); ++p) {
@@ -167,7 +166,6 @@ class DeviationWalker {
   }
 
  private:
-  const QuadMesh& input_;
   const TMesh& tm_;
   QuadMeshTopology topo_;
   std::vector<int> quad_patch_;

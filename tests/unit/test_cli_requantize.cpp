@@ -131,14 +131,14 @@ TEST_F(Requantize, SubdividedCubeCoarsensToSixPatches) {
 
 // The lengths an output has are reported: uniform ones (every coarse length times the coarse
 // factor) on the cube, where nothing is inverted, so the default does not refit; fitted ones
-// when asked for. An unknown choice is refused.
+// and strip lengths when asked for. An unknown choice is refused.
 TEST_F(Requantize, CoarseLengthsAreReported) {
   const QuadMesh cube = test::subdivided_cube(3);
-  for (const std::string choice : {"uniform", "strict-uniform", "fitted"}) {
+  for (const std::string choice : {"uniform", "strict-uniform", "fitted", "strips"}) {
     const json j = requantize(cube, "--coarse --coarse-lengths " + choice);
     ASSERT_EQ(j["status"], "optimal") << choice;
     const bool uniform = choice != "fitted";
-    EXPECT_EQ(j["coarse_lengths"], uniform ? "uniform" : "fitted") << choice;
+    EXPECT_EQ(j["coarse_lengths"], choice == "strict-uniform" ? "uniform" : choice) << choice;
     EXPECT_EQ(j.contains("coarse_factor"), uniform) << choice;
     EXPECT_EQ(j["layout_patches"], 6) << choice;
     EXPECT_EQ(measure_quad_mesh(output()).inverted, 0) << choice;

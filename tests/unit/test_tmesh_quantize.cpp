@@ -11,6 +11,7 @@
 #include <random>
 
 #include "bimdf/metrics.hpp"
+#include "bimdf/tmesh/collapse.hpp"
 #include "bimdf/tmesh/from_quad_mesh.hpp"
 #include "bimdf/tmesh/quantize.hpp"
 #include "bimdf/tmesh/requantize.hpp"
@@ -112,6 +113,45 @@ TEST(TMeshQuantize, CoarseLayoutCollapsesWhatThePathsAllow) {
     ASSERT_EQ(u.zero_arcs, q.zero_arcs) << "trial " << trial;
     for (int64_t x : u.arc_length) ASSERT_EQ(x % u.coarse_factor, 0);
   }
+}
+
+// Strip lengths (coarse_strips): on traced random meshes the coarse layout's zero arcs and base
+// complex exactly, valid; on a 6 × 3 grid (one patch, one strip each way) the grid itself,
+// where one factor for both ways can only give 4 × 4.
+TEST(TMeshQuantize, StripLengthsKeepTheCoarseLayoutAndFitEachStrip) {
+  for (uint64_t seed = 0; seed < 16; ++seed) {
+    const QuadMesh mesh = test::random_quad_mesh(seed);
+    TraceOptions trace;
+    trace.max_angle_deg = 45;
+    const TracedTMesh traced = trace_tmesh(mesh, trace, "random");
+    const TMeshIncidence inc = validate_tmesh(traced.tmesh);
+    QuantizeOptions o;
+    o.coarse = o.coarse_uniform = true;
+    const TMeshQuantization uniform = quantize_tmesh(traced.tmesh, inc, o);
+    o.coarse_strips = true;
+    const TMeshQuantization strips = quantize_tmesh(traced.tmesh, inc, o);
+    ASSERT_EQ(check_quantization(traced.tmesh, strips.arc_length), "") << seed;
+    ASSERT_GE(strips.coarse_factor, 1);
+    for (int a = 0; a < traced.tmesh.num_arcs(); ++a)
+      ASSERT_EQ(strips.arc_length[a] == 0, uniform.arc_length[a] == 0) << seed << ", arc " << a;
+    const auto base_complex = [&](const TMeshQuantization& q) {
+      return measure_quad_mesh(collapse_and_tessellate(traced.tmesh, inc, q.arc_length, &mesh).mesh)
+          .base_complex_faces;
+    };
+    EXPECT_EQ(base_complex(strips), base_complex(uniform)) << seed;
+  }
+  const QuadMesh grid = test::grid_mesh(6, 3);
+  const TracedTMesh traced = trace_tmesh(grid, {}, "grid");
+  const TMeshIncidence inc = validate_tmesh(traced.tmesh);
+  ASSERT_EQ(traced.tmesh.num_patches(), 1);
+  QuantizeOptions o;
+  o.coarse = o.coarse_uniform = true;
+  EXPECT_EQ(quantized_quads(traced.tmesh, quantize_tmesh(traced.tmesh, inc, o).arc_length), 16);
+  o.coarse_strips = true;
+  const TMeshQuantization strips = quantize_tmesh(traced.tmesh, inc, o);
+  for (int a = 0; a < traced.tmesh.num_arcs(); ++a)
+    EXPECT_EQ(strips.arc_length[a], std::llround(traced.tmesh.arc_target[a])) << a;
+  EXPECT_EQ(quantized_quads(traced.tmesh, strips.arc_length), 18);
 }
 
 // T-meshes traced on random quad meshes (random Catmull–Clark meshes, randomly subdivided),

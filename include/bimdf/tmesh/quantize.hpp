@@ -181,6 +181,10 @@ struct QuantizeOptions {
   // With `coarse`: instead of the second solve, multiply every coarse length by one integer
   // (chosen for the targets' total area), which keeps the coarse layout's base complex.
   bool coarse_uniform = false;
+  // With coarse_uniform: one integer per strip of the coarse tessellation instead of one for
+  // all, each fitted to the input's size along its strip (src/tmesh/strip_lengths.hpp); the base
+  // complex is still the coarse layout's.
+  bool coarse_strips = false;
   // ArcModelOptions::relaxed / relaxed_weight; the result is checked with
   // check_relaxed_quantization. relaxed with coarse throws std::invalid_argument.
   bool relaxed = false;
@@ -193,7 +197,7 @@ struct TMeshQuantization {
   SolveStatus status = SolveStatus::Infeasible;
   double objective = 0;         // of the (last) model solved
   double coarse_objective = 0;  // the coarse stage's, when coarse
-  int64_t coarse_factor = 0;    // with coarse_uniform: the factor k
+  int64_t coarse_factor = 0;    // with coarse_uniform: the factor k (strips: their mean, ≥ 1)
   std::vector<int64_t> arc_length;
   MinOneConstraints constraints;
   int zero_arcs = 0;
