@@ -323,6 +323,9 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   const QuadMesh mesh = quad_mesh_from_python(V, F);
   if (feature_traces != "cross" && feature_traces != "stop" && feature_traces != "auto")
     throw py::value_error("feature_traces must be 'cross', 'stop' or 'auto'");
+  if (feature_traces != "auto" && !coarse && !max_angle)
+    throw py::value_error(
+        "feature_traces applies to the angle-bounded traces (coarse=True or max_angle)");
   if (int(scale != 1) + int(bool(edge_length)) + int(bool(target_faces)) > 1)
     throw py::value_error("give at most one of scale, edge_length, target_faces");
   if (coarse && relaxed) throw py::value_error("coarse and relaxed exclude each other");

@@ -184,6 +184,8 @@ def test_mesh_errors_are_the_documented_exceptions(tmp_path):
         bimdf.requantize(V, np.array([[0, 1, 2, 3]]), reorder_weight=2.0)
     with pytest.raises(ValueError, match=r"^feature_traces must be 'cross', 'stop' or 'auto'$"):
         bimdf.requantize(V, np.array([[0, 1, 2, 3]]), feature_traces="both")
+    with pytest.raises(ValueError, match=r"^feature_traces applies to the angle-bounded traces"):
+        bimdf.requantize(V, np.array([[0, 1, 2, 3]]), feature_traces="stop")
     with pytest.raises(ValueError, match=r"^scale must be > 0$"):
         bimdf.remesh(str(BUNNY_LAYOUT), scale=0.0)
     with pytest.raises(ValueError, match=r"^give at most one of scale, edge_length, target_faces$"):
