@@ -85,15 +85,14 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
   // The coarse objective exists to collapse arcs, which relaxed quantization never does.
   relaxed->excludes("--coarse");
   cmd->add_option("--coarse-lengths", o.coarse_lengths,
-                  "With --coarse: `uniform` multiplies the coarse lengths by one integer for "
-                  "the requested density (keeps the coarse layout's base complex exactly) and "
-                  "falls back to `fitted` where that leaves inverted quads that fitted lengths "
-                  "do not; `fitted` solves again for lengths at that density with the zero "
-                  "arcs kept (better quads, but separatrices drift apart and the base complex "
-                  "grows); `strict-uniform`: uniform, never refitted; `strips`: one integer per "
-                  "strip of the coarse layout, fitted to the input's size along it (the same "
-                  "base complex, closer to the input's quads), refitted as uniform is")
-      ->default_val("uniform")
+                  "With --coarse: `strips` (the default) multiplies the coarse lengths by one "
+                  "integer per strip of the coarse layout, fitted to the input's size along it "
+                  "(keeps the coarse layout's base complex exactly), and falls back to `fitted` "
+                  "where that leaves inverted quads that fitted lengths do not; `uniform`: the "
+                  "same with one integer for the whole mesh; `fitted` solves again for lengths "
+                  "at the requested density with the zero arcs kept (separatrices drift apart "
+                  "and the base complex grows); `strict-uniform`: uniform, never refitted")
+      ->default_val("strips")
       ->check(CLI::IsMember({"fitted", "uniform", "strict-uniform", "strips"}));
   cmd->add_option("--half-arc", o.half_arc,
                   "Half-arc quantization (paper §4.3): the two sides of every non-zero path "

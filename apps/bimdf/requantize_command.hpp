@@ -23,7 +23,7 @@ struct RequantizeCommandOptions {
   std::string layout_out, tmesh_out, tmesh_in;
   std::string cost = "quadratic";
   bool coarse = false;
-  std::string coarse_lengths = "uniform";
+  std::string coarse_lengths = "strips";
   std::string half_arc = "auto";  // --half-arc exact|bounded|off|auto (resolved in run)
   double reorder_weight = 1;      // --reorder-weight, with --half-arc bounded
   bool keep_crossings = false;    // --keep-crossings, with --half-arc bounded

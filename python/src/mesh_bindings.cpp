@@ -508,7 +508,7 @@ void bind_mesh(py::module_& m) {
         py::arg("target_faces") = py::none(), py::arg("coarse") = false,
         py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
         py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0,
-        py::arg("cost") = "quadratic", py::arg("coarse_lengths") = "uniform",
+        py::arg("cost") = "quadratic", py::arg("coarse_lengths") = "strips",
         py::arg("calibrate") = true, py::arg("smooth_iterations") = 30,
         py::arg("smooth_damping") = 0.5, py::arg("quality_rounds") = 30, py::arg("threads") = 1,
         py::arg("half_arc") = "auto", py::arg("reorder_weight") = 1.0,

@@ -143,6 +143,7 @@ TEST_F(Requantize, CoarseLengthsAreReported) {
     EXPECT_EQ(j["layout_patches"], 6) << choice;
     EXPECT_EQ(measure_quad_mesh(output()).inverted, 0) << choice;
   }
+  EXPECT_EQ(requantize(cube, "--coarse")["coarse_lengths"], "strips");  // the default
   const std::string in = write_mesh("cube.obj", cube);
   const CliRun r =
       run("requantize " + in + " -o " + path("even.obj") + " --coarse --coarse-lengths even");
