@@ -91,6 +91,7 @@ class DeviationWalker {
   // Grid coordinate uv of patch p as a place, and the quarter turns from the patch's grid
   // axes to that quad's square; quad −1 when p has no cell there.
   Place place_in_patch(int p, const Vec2& uv, int& quarters) const {
+    if (uv == Vec2{-1, -1}) return {};  // an irregular patch's quad: no grid coordinates
     const PatchGrid& g = tm_.patch_grid[p];
     const int i = std::clamp(static_cast<int>(std::floor(uv[0])), 0, g.width - 1);
     const int j = std::clamp(static_cast<int>(std::floor(uv[1])), 0, g.height - 1);
