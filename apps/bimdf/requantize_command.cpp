@@ -278,14 +278,13 @@ int run_requantize(const RequantizeCommandOptions& o) {
   }
   if (!r.traced.feature_traces.empty()) {
     j["feature_traces"] = r.traced.feature_traces;
-    json other = json::object();
-    if (r.other_base_complex >= 0) other["base_complex"] = r.other_base_complex;
-    if (r.other_base_complex >= 0 && r.other_failure.empty())
-      other["scaled_jacobian_mean"] = r.other_scaled_jacobian_mean;
-    if (r.other_base_complex >= 0 && r.other_failure.empty() && ro.trace.max_angle_deg < 90)
-      other["over_bound"] = r.other_over_bound;
-    if (!r.other_failure.empty()) other["failure"] = r.other_failure;
-    if (!other.empty()) j["feature_traces_other"] = other;
+    if (const tmesh::OtherRunSummary other = tmesh::other_run_summary(r); !other.empty()) {
+      json& o = j["feature_traces_other"];
+      if (other.base_complex) o["base_complex"] = *other.base_complex;
+      if (other.scaled_jacobian_mean) o["scaled_jacobian_mean"] = *other.scaled_jacobian_mean;
+      if (other.over_bound) o["over_bound"] = *other.over_bound;
+      if (!other.failure.empty()) o["failure"] = other.failure;
+    }
   }
   j["model"] = {{"nodes", q.nodes}, {"edges", q.edges}};
   s << "t-mesh        " << tm.num_patches() << " patches, " << tm.num_arcs() << " arcs, "
@@ -419,20 +418,19 @@ int run_requantize(const RequantizeCommandOptions& o) {
                             {"border", valences(out_metrics.boundary_singularities)}};
   j["base_complex_out"] = out_metrics.base_complex_faces;
   if (have_mesh) {
-    const double bound =
-        ro.trace.max_angle_deg >= 0 && ro.trace.max_angle_deg < 90 ? ro.trace.max_angle_deg : -1;
-    const tmesh::SeparatrixDeviation& d = r.deviation;  // measured against `bound`
+    const tmesh::SeparatrixDeviation& d = r.deviation;
+    const bool bound = d.bound_deg >= 0;
     j["separatrix_deviation"] = {{"measured", d.measured},
                                  {"unmeasured", d.unmeasured},
                                  {"max_deg", d.max_deg},
                                  {"max_to_border_deg", d.max_to_border_deg}};
-    if (bound >= 0) j["separatrix_deviation"]["over_bound"] = d.over_bound;
+    if (bound) j["separatrix_deviation"]["over_bound"] = d.over_bound;
     s << "deviation     " << significant(d.max_deg, 3)
       << "° at most from the input's grid between singular vertices ("
       << significant(d.max_to_border_deg, 3) << "° to the border) over " << d.measured
       << (d.measured == 1 ? " separatrix" : " separatrices")
       << (d.unmeasured ? ", " + std::to_string(d.unmeasured) + " not measured" : "")
-      << (bound >= 0 ? ", " + std::to_string(d.over_bound) + " above the bound" : "") << "\n";
+      << (bound ? ", " + std::to_string(d.over_bound) + " above the bound" : "") << "\n";
   }
   if (have_mesh) {
     const QuadMeshMetrics in_metrics = measure_quad_mesh(mesh);

@@ -411,14 +411,14 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   report["half_arc"] = half_arc_used;
   if (!r.traced.feature_traces.empty()) {
     report["feature_traces"] = r.traced.feature_traces;
-    py::dict other;
-    if (r.other_base_complex >= 0) other["base_complex"] = r.other_base_complex;
-    if (r.other_base_complex >= 0 && r.other_failure.empty())
-      other["scaled_jacobian_mean"] = r.other_scaled_jacobian_mean;
-    if (r.other_base_complex >= 0 && r.other_failure.empty() && ro.trace.max_angle_deg < 90)
-      other["over_bound"] = r.other_over_bound;
-    if (!r.other_failure.empty()) other["failure"] = r.other_failure;
-    if (!other.empty()) report["feature_traces_other"] = other;
+    if (const tmesh::OtherRunSummary other = tmesh::other_run_summary(r); !other.empty()) {
+      py::dict o;
+      if (other.base_complex) o["base_complex"] = *other.base_complex;
+      if (other.scaled_jacobian_mean) o["scaled_jacobian_mean"] = *other.scaled_jacobian_mean;
+      if (other.over_bound) o["over_bound"] = *other.over_bound;
+      if (!other.failure.empty()) o["failure"] = other.failure;
+      report["feature_traces_other"] = o;
+    }
   }
   if (r.half_arc) {
     report["half_arc_paths"] = r.half_arc->relaxed.size();
@@ -440,13 +440,11 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   report["collapsed_patches"] = r.collapsed.collapsed_patches;
   report["irregular_patches"] = r.collapsed.irregular_patches;
   report["metrics"] = metrics_to_python(out_metrics);
-  const double bound =
-      ro.trace.max_angle_deg >= 0 && ro.trace.max_angle_deg < 90 ? ro.trace.max_angle_deg : -1;
-  const tmesh::SeparatrixDeviation& d = r.deviation;  // measured against `bound`
+  const tmesh::SeparatrixDeviation& d = r.deviation;
   py::dict deviation(py::arg("measured") = d.measured, py::arg("unmeasured") = d.unmeasured,
                      py::arg("max_deg") = d.max_deg,
                      py::arg("max_to_border_deg") = d.max_to_border_deg);
-  if (bound >= 0) deviation["over_bound"] = d.over_bound;
+  if (d.bound_deg >= 0) deviation["over_bound"] = d.over_bound;
   report["separatrix_deviation"] = deviation;
   report["time"] = py::dict(
       py::arg("trace_s") = r.time_trace_s, py::arg("quantize_s") = r.time_quantize_s,

@@ -195,6 +195,17 @@ RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& m
   return kept;
 }
 
+OtherRunSummary other_run_summary(const RequantizeResult& r) {
+  OtherRunSummary s;
+  s.failure = r.other_failure;
+  if (r.other_base_complex < 0) return s;
+  s.base_complex = r.other_base_complex;
+  if (!r.other_failure.empty()) return s;
+  s.scaled_jacobian_mean = r.other_scaled_jacobian_mean;
+  if (r.deviation.bound_deg >= 0) s.over_bound = r.other_over_bound;
+  return s;
+}
+
 std::string feature_traces_summary(const RequantizeResult& r) {
   if (r.traced.feature_traces.empty()) return "";
   const bool crossing = r.traced.feature_traces == "cross";

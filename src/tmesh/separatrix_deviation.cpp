@@ -183,6 +183,7 @@ SeparatrixDeviation measure_separatrix_deviation(const QuadMesh& input, const TM
                                                  const CollapsedMesh& collapsed, double bound_deg) {
   const QuadMesh& out = collapsed.mesh;
   SeparatrixDeviation result;
+  result.bound_deg = bound_deg < 0 ? -1 : bound_deg;
   if (out.num_quads() == 0) return result;
   if (collapsed.origin.size() != size_t(out.num_vertices()) ||
       out.quad_patch.size() != size_t(out.num_quads()) ||

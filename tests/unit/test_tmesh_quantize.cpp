@@ -505,6 +505,13 @@ TEST(TMeshQuantize, ASecondRunGivesUpBeforeSmoothingWhenItIsNotCoarser) {
   EXPECT_EQ(kept.other_base_complex, given_up.given_up_at_base_complex);
   EXPECT_EQ(kept.other_failure, "given up before smoothing: base complex " +
                                     std::to_string(given_up.given_up_at_base_complex));
+  // Reported as its base complex and why, without figures of a smoothing it never had.
+  const OtherRunSummary other = other_run_summary(kept);
+  EXPECT_EQ(other.base_complex, given_up.given_up_at_base_complex);
+  EXPECT_EQ(other.failure, kept.other_failure);
+  EXPECT_FALSE(other.scaled_jacobian_mean);
+  EXPECT_FALSE(other.over_bound);
+  EXPECT_TRUE(other_run_summary(full).empty());  // one run: nothing to report
 }
 
 TEST(TMeshQuantize, CheckNamesTheViolation) {

@@ -169,6 +169,19 @@ RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop,
 RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& mesh,
                                        RequantizeOptions options, const std::string& source);
 
+// FeatureTraces::Auto's other run as reports give it (`feature_traces_other` of the CLI and
+// Python): its base complex when there was a second run, its mean scaled Jacobian and
+// separatrices above the angle bound when it was smoothed (the latter with a bound), and why it
+// failed or was given up; empty() when there was no other run.
+struct OtherRunSummary {
+  std::optional<int> base_complex;
+  std::optional<double> scaled_jacobian_mean;
+  std::optional<int> over_bound;
+  std::string failure;
+  bool empty() const { return !base_complex && failure.empty(); }
+};
+OtherRunSummary other_run_summary(const RequantizeResult& r);
+
 // "traces end at feature curves; kept against crossing them (base complex 885, mean scaled
 // Jacobian 0.949)": traced.feature_traces and the comparison in words ("" for the
 // plain motorcycle graph).

@@ -45,7 +45,8 @@ struct SeparatrixDeviation {
   double max_deg = 0;  // the largest deviation of one between singular vertices
   double max_to_border_deg = 0;        // the largest of one ending at the border
   int worst_from = -1, worst_to = -1;  // output vertices of a separatrix with max_deg
-  int over_bound = 0;  // between singular vertices and above the bound passed (1e-9 slack)
+  double bound_deg = -1;  // the bound measured against (< 0: none, and over_bound is 0)
+  int over_bound = 0;     // between singular vertices and above the bound (1e-9 slack)
   // Every measured separatrix: its output vertices (start, end), whether it ends at the border
   // (at a vertex that is not singular), and its deviation; in order of the start vertex.
   struct Measured {
