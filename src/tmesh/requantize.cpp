@@ -134,6 +134,26 @@ void add_times(RequantizeResult& kept, const RequantizeResult& other) {
   kept.time_smoothing_s += other.time_smoothing_s;
 }
 
+// The angle bound is the user's: a coarser layout that breaks it on more separatrices does not
+// win (traces ending at feature curves leave the seeds beyond a curve free to slide).
+bool stop_wins(const RequantizeResult& cross, const QuadMeshMetrics& cross_metrics,
+               const RequantizeResult& stop, const QuadMeshMetrics& stop_metrics, double slack) {
+  return prefer_coarser_layout(stop_metrics, cross_metrics, slack) &&
+         stop.deviation.over_bound <= cross.deviation.over_bound;
+}
+
+bool stop_wins_but_for_bad_quads(const RequantizeResult& cross,
+                                 const QuadMeshMetrics& cross_metrics, const RequantizeResult& stop,
+                                 const QuadMeshMetrics& stop_metrics, double slack) {
+  if (stop_metrics.inverted + stop_metrics.degenerate <=
+      cross_metrics.inverted + cross_metrics.degenerate)
+    return false;
+  QuadMeshMetrics righted = stop_metrics;
+  righted.inverted = cross_metrics.inverted;
+  righted.degenerate = cross_metrics.degenerate;
+  return stop_wins(cross, cross_metrics, stop, righted, slack);
+}
+
 RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop, double slack) {
   if (stop.given_up_at_base_complex > 0) {
     cross.other_base_complex = stop.given_up_at_base_complex;
@@ -145,11 +165,7 @@ RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop,
   if (stop.collapsed.mesh.quads.empty()) return cross;
   const QuadMeshMetrics a = measure_quad_mesh(cross.collapsed.mesh);
   const QuadMeshMetrics b = measure_quad_mesh(stop.collapsed.mesh);
-  // The angle bound is the user's: a coarser layout that breaks it on more separatrices does
-  // not win (traces ending at feature curves leave the seeds beyond a curve free to slide).
-  const bool keep_stop = cross.collapsed.mesh.quads.empty() ||
-                         (prefer_coarser_layout(b, a, slack) &&
-                          stop.deviation.over_bound <= cross.deviation.over_bound);
+  const bool keep_stop = cross.collapsed.mesh.quads.empty() || stop_wins(cross, a, stop, b, slack);
   RequantizeResult& kept = keep_stop ? stop : cross;
   const RequantizeResult& other = keep_stop ? cross : stop;
   const QuadMeshMetrics& other_metrics = keep_stop ? a : b;
@@ -171,19 +187,40 @@ RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& m
   // Only a coarser layout can win: give up before smoothing (the costly part, and where
   // couplingdown's traces ending at curves spend minutes in repairs) when it is not.
   options.give_up_at_base_complex = measure_quad_mesh(cross.collapsed.mesh).base_complex_faces;
-  // One smoothing, no repairs after it: a run that leaves quads inverted loses to one that
-  // does not anyway, and its repairs (each a smoothing again) took couplingdown at 10° from
+  const RequantizeOptions with_repairs = options;
+  // One smoothing, no repairs after it, at first: a run that leaves quads inverted loses to one
+  // that does not anyway, and its repairs (each a smoothing again) took couplingdown at 10° from
   // 2 s to over 3 minutes.
   options.max_split_repairs = 0;
   options.refit_uniform = false;
-  RequantizeResult stop;
-  try {
+  const auto run_stop = [&](const RequantizeOptions& o) {
     bimdf::detail::Stopwatch t;
-    TracedTMesh traced = trace_tmesh(mesh, options.trace, source);
+    TracedTMesh traced = trace_tmesh(mesh, o.trace, source);
     const double trace_s = t.lap();
     report("traced", progress_summary(traced.tmesh));
-    stop = requantize_tmesh(std::move(traced), &mesh, options, source);
-    stop.time_trace_s = trace_s;
+    RequantizeResult r = requantize_tmesh(std::move(traced), &mesh, o, source);
+    r.time_trace_s = trace_s;
+    return r;
+  };
+  RequantizeResult stop;
+  try {
+    stop = run_stop(options);
+    // Coarser and as good but for a few bad quads (mech-holes-shark at 45°: one inverted quad,
+    // 860 patches against 994): the repairs after smoothing may right them, so the run is made
+    // again with them — only here, where it would win, since they cost a smoothing each.
+    if (stop.given_up_at_base_complex <= 0 && !stop.collapsed.mesh.quads.empty() &&
+        !cross.collapsed.mesh.quads.empty() &&
+        (with_repairs.max_split_repairs > 0 || with_repairs.refit_uniform) &&
+        stop_wins_but_for_bad_quads(cross, measure_quad_mesh(cross.collapsed.mesh), stop,
+                                    measure_quad_mesh(stop.collapsed.mesh),
+                                    options.coarser_quality_slack)) {
+      report("repair",
+             "ending at feature curves left quads inverted or degenerate: run again "
+             "with repairs after smoothing");
+      RequantizeResult repaired = run_stop(with_repairs);
+      add_times(repaired, stop);
+      stop = std::move(repaired);
+    }
   } catch (const CollapseError& e) {
     cross.other_failure = e.what();
     report("compared", feature_traces_summary(cross));

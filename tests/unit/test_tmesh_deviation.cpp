@@ -112,8 +112,12 @@ TEST(TMeshDeviation, PlanarStaircaseMatchesThePlane) {
       }
       EXPECT_EQ(d.max_deg, max_deg) << where;
       EXPECT_EQ(d.over_bound, over) << where;
-      if (angle == 45) EXPECT_GT(d.max_deg, 14) << where;  // B slid onto A's line
-      if (angle == 10) EXPECT_EQ(d.max_deg, 0) << where;
+      if (angle == 45) {
+        EXPECT_GT(d.max_deg, 14) << where;  // B slid onto A's line
+      }
+      if (angle == 10) {
+        EXPECT_EQ(d.max_deg, 0) << where;
+      }
     }
 }
 

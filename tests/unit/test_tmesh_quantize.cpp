@@ -438,10 +438,36 @@ TEST(TMeshQuantize, PreferCoarserLayoutOnlyWhenItsQuadsHold) {
   EXPECT_FALSE(prefer_coarser_layout(coarse, fine, 0.05));
 }
 
-// requantize with FeatureTraces::Auto is the run prefer_coarser_layout picks of Cross and Stop
-// (Stop only with no more separatrices above the angle bound), on random meshes with feature curves
-// (coarse, 45°; there crossing always wins — the bundled bunny, where ending wins, is
-// RemeshCli.FeatureOutIsWhatRequantizeReads); without features, one run.
+// The rule between the two runs adds the angle bound to prefer_coarser_layout; losing only for
+// bad quads is what sends the run ending at curves through the repairs.
+TEST(TMeshQuantize, StopRunWinsOnlyWithinTheBoundAndLosesOnlyOnBadQuadsWhenTheyDecide) {
+  RequantizeResult cross, stop;
+  QuadMeshMetrics a, b;
+  a.base_complex_faces = 100, a.scaled_jacobian_mean = 0.95;
+  b.base_complex_faces = 60, b.scaled_jacobian_mean = 0.93;
+  EXPECT_TRUE(stop_wins(cross, a, stop, b, 0.05));
+  EXPECT_FALSE(stop_wins_but_for_bad_quads(cross, a, stop, b, 0.05));  // it wins outright
+  stop.deviation.over_bound = 1;
+  EXPECT_FALSE(stop_wins(cross, a, stop, b, 0.05));
+  EXPECT_FALSE(stop_wins_but_for_bad_quads(cross, a, stop, b, 0.05));  // the bound, not quads
+  cross.deviation.over_bound = 1;
+  EXPECT_TRUE(stop_wins(cross, a, stop, b, 0.05));
+  b.inverted = 1;
+  EXPECT_FALSE(stop_wins(cross, a, stop, b, 0.05));
+  EXPECT_TRUE(stop_wins_but_for_bad_quads(cross, a, stop, b, 0.05));
+  b.inverted = 0, b.degenerate = 2, a.degenerate = 1;
+  EXPECT_TRUE(stop_wins_but_for_bad_quads(cross, a, stop, b, 0.05));
+  b.scaled_jacobian_mean = 0.89;  // 0.06 lower: loses on its mean too
+  EXPECT_FALSE(stop_wins_but_for_bad_quads(cross, a, stop, b, 0.05));
+  b.scaled_jacobian_mean = 0.93, b.base_complex_faces = 100;  // not coarser
+  EXPECT_FALSE(stop_wins_but_for_bad_quads(cross, a, stop, b, 0.05));
+}
+
+// requantize with FeatureTraces::Auto is the run stop_wins picks of Cross and Stop — Stop made
+// without the repairs after smoothing, and again with them when it loses only on bad quads —
+// on random meshes with feature curves (coarse, 45°; there crossing always wins — the bundled
+// bunny, where ending wins, is RemeshCli.FeatureOutIsWhatRequantizeReads); without features,
+// one run.
 TEST(TMeshQuantize, AutoFeatureTracesKeepTheRunTheRulePicks) {
   int compared = 0, stopped = 0;
   for (uint64_t seed = 0; seed < 24; ++seed) {
@@ -455,7 +481,7 @@ TEST(TMeshQuantize, AutoFeatureTracesKeepTheRunTheRulePicks) {
       runs[mode] = requantize(mesh, o, "random");
     }
     const RequantizeResult& cross = runs[FeatureTraces::Cross];
-    const RequantizeResult& stop = runs[FeatureTraces::Stop];
+    const RequantizeResult& repaired = runs[FeatureTraces::Stop];
     const RequantizeResult& chosen = runs[FeatureTraces::Auto];
     ASSERT_FALSE(cross.collapsed.mesh.quads.empty()) << seed;
     EXPECT_EQ(cross.traced.feature_traces, "cross");
@@ -465,13 +491,19 @@ TEST(TMeshQuantize, AutoFeatureTracesKeepTheRunTheRulePicks) {
       continue;
     }
     ++compared;
-    EXPECT_EQ(stop.traced.feature_traces, "stop");
-    const bool stop_wins = prefer_coarser_layout(measure_quad_mesh(stop.collapsed.mesh),
-                                                 measure_quad_mesh(cross.collapsed.mesh), 0.05);
-    const bool within = stop.deviation.over_bound <= cross.deviation.over_bound;
-    stopped += stop_wins && within;
-    const RequantizeResult& winner = stop_wins && within ? stop : cross;
-    const RequantizeResult& loser = stop_wins && within ? cross : stop;
+    o.feature_traces = FeatureTraces::Stop;
+    o.max_split_repairs = 0;
+    o.refit_uniform = false;
+    const RequantizeResult unrepaired = requantize(mesh, o, "random");
+    EXPECT_EQ(unrepaired.traced.feature_traces, "stop");
+    const QuadMeshMetrics c = measure_quad_mesh(cross.collapsed.mesh);
+    const QuadMeshMetrics u = measure_quad_mesh(unrepaired.collapsed.mesh);
+    const RequantizeResult& stop =
+        stop_wins_but_for_bad_quads(cross, c, unrepaired, u, 0.05) ? repaired : unrepaired;
+    const bool keep_stop = stop_wins(cross, c, stop, measure_quad_mesh(stop.collapsed.mesh), 0.05);
+    stopped += keep_stop;
+    const RequantizeResult& winner = keep_stop ? stop : cross;
+    const RequantizeResult& loser = keep_stop ? cross : stop;
     EXPECT_EQ(chosen.traced.feature_traces, winner.traced.feature_traces) << seed;
     EXPECT_EQ(chosen.collapsed.mesh.quads, winner.collapsed.mesh.quads) << seed;
     EXPECT_EQ(chosen.other_base_complex, measure_quad_mesh(loser.collapsed.mesh).base_complex_faces)

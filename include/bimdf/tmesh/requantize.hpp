@@ -148,11 +148,21 @@ struct RequantizeResult {
 bool prefer_coarser_layout(const QuadMeshMetrics& coarser, const QuadMeshMetrics& other,
                            double slack);
 
-// FeatureTraces::Auto's last step, for two requantizations of one mesh traced with
-// cross_features true (`cross`) and false (`stop`): `stop` when prefer_coarser_layout(stop,
-// cross, slack) picks it and it has no more separatrices above the angle bound
-// (deviation.over_bound) than `cross`, else `cross` (a run without a mesh loses), with the
-// other's base complex, mean scaled Jacobian and separatrices above the bound
+// FeatureTraces::Auto's rule between two requantizations of one mesh, traced with
+// cross_features true (`cross`) and false (`stop`), with their meshes' metrics: `stop` wins
+// when prefer_coarser_layout(stop_metrics, cross_metrics, slack) and it has no more
+// separatrices above the angle bound (deviation.over_bound) than `cross`.
+bool stop_wins(const RequantizeResult& cross, const QuadMeshMetrics& cross_metrics,
+               const RequantizeResult& stop, const QuadMeshMetrics& stop_metrics, double slack);
+
+// Whether `stop` loses to `cross` only for having more inverted and degenerate quads: it would
+// win (stop_wins) with as many as `cross` has.
+bool stop_wins_but_for_bad_quads(const RequantizeResult& cross,
+                                 const QuadMeshMetrics& cross_metrics, const RequantizeResult& stop,
+                                 const QuadMeshMetrics& stop_metrics, double slack);
+
+// FeatureTraces::Auto's last step: `stop` when stop_wins, else `cross` (a run without a mesh
+// loses), with the other's base complex, mean scaled Jacobian and separatrices above the bound
 // (RequantizeResult::other_*) and both runs' times added up.
 RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop, double slack);
 
@@ -160,12 +170,13 @@ RequantizeResult keep_coarser_run(RequantizeResult cross, RequantizeResult stop,
 // feature_traces "cross"): traces `mesh` again with options.trace.cross_features false,
 // requantizes that T-mesh with `options` — but without the repairs after smoothing
 // (max_split_repairs 0, refit_uniform off: one smoothing) — and returns keep_coarser_run's
-// pick. When the first
-// T-mesh had no feature curve, the first run; when the second run's collapse fails, the first
-// with the message in other_failure; when the second run's collapsed mesh, before smoothing,
-// has no fewer base-complex patches than the first's (give_up_at_base_complex), the first, with
-// that count in other_base_complex and other_failure. Reports "traced" and "compared" (elapsed
-// since this call).
+// pick. When that run would win but for its bad quads (stop_wins_but_for_bad_quads), it is made
+// again with `options`' repairs first (their smoothings are spent only where they can change
+// the pick; the times of both are added). When the first T-mesh had no feature curve, the first
+// run; when the second run's collapse fails, the first with the message in other_failure; when
+// the second run's collapsed mesh, before smoothing, has no fewer base-complex patches than the
+// first's (give_up_at_base_complex), the first, with that count in other_base_complex and
+// other_failure. Reports "traced", "repair" and "compared" (elapsed since this call).
 RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& mesh,
                                        RequantizeOptions options, const std::string& source);
 
