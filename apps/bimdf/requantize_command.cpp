@@ -87,8 +87,10 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
   cmd->add_option("--coarse-lengths", o.coarse_lengths,
                   "With --coarse: `strips` (the default) multiplies the coarse lengths by one "
                   "integer per strip of the coarse layout, fitted to the input's size along it "
-                  "(keeps the coarse layout's base complex exactly), and falls back to `fitted` "
-                  "where that leaves inverted quads that fitted lengths do not; `uniform`: the "
+                  "(keeps the coarse layout's base complex exactly), and falls back to `uniform` "
+                  "(the same base complex) where that leaves quads inverted or flat that no split "
+                  "reaches and one integer does not, then to `fitted` where inverted quads "
+                  "remain that fitted lengths right; `uniform`: the "
                   "same with one integer for the whole mesh; `fitted` solves again for lengths "
                   "at the requested density with the zero arcs kept (separatrices drift apart "
                   "and the base complex grows); `strict-uniform`: uniform, never refitted")
@@ -343,9 +345,7 @@ int run_requantize(const RequantizeCommandOptions& o) {
   if (o.coarse) j["coarse_objective"] = q.coarse_objective;
   if (o.coarse && q.coarse_factor > 0) j["coarse_factor"] = q.coarse_factor;
   if (o.coarse)
-    j["coarse_lengths"] = q.coarse_factor <= 0        ? "fitted"
-                          : ro.quantize.coarse_strips ? "strips"
-                                                      : "uniform";
+    j["coarse_lengths"] = q.coarse_factor <= 0 ? "fitted" : q.strip_lengths ? "strips" : "uniform";
   if (r.coarse_refitted)
     std::cerr << "note: uniform coarse lengths left quads inverted that no split reached; "
                  "the lengths were fitted instead (the base complex grows; "

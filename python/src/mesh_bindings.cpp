@@ -426,9 +426,9 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
     report["aligned_two_gons"] = r.aligned_two_gons;
   }
   if (coarse)
-    report["coarse_lengths"] = q.coarse_factor <= 0        ? "fitted"
-                               : ro.quantize.coarse_strips ? "strips"
-                                                           : "uniform";
+    report["coarse_lengths"] = q.coarse_factor <= 0 ? "fitted"
+                               : q.strip_lengths    ? "strips"
+                                                    : "uniform";
   report["density"] = ro.trace.density;
   if (ro.target_quads > 0) {
     report["target_quads"] = ro.target_quads;

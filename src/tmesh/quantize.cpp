@@ -87,6 +87,7 @@ void run_quantization(const TMesh& tmesh, const TMeshIncidence& incidence,
       result.arc_length =
           strip_refined_lengths(tmesh, result.arc_length, model_options.two_gons, &mean);
       result.coarse_factor = std::max<int64_t>(1, std::llround(mean));
+      result.strip_lengths = true;
       for (int64_t x : result.arc_length) result.zero_arcs += x == 0;
       return;
     }

@@ -502,12 +502,22 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       // Quads smoothing did not right: split them by bounding the quantization and smooth the
       // new one, a few times at most (each round smooths the whole mesh again); where no split
       // reaches them, uniform coarse lengths get fitted ones instead.
-      if (left.to_split.empty() || smoothed_rounds >= options.max_split_repairs) break;
+      // Flat quads no split is made for: only other lengths can help them (below).
+      const bool only_flat = left.to_split.empty();
+      if ((only_flat && left.degenerate_quads.empty()) ||
+          smoothed_rounds >= options.max_split_repairs)
+        break;
       MinOneConstraints bounds = quantize.extra_constraints;
       const bool split =
           add_quad_split_bounds(tm, r.quantization.arc_length, r.collapsed, left.to_split, bounds);
-      const bool refit = !split && options.refit_uniform && quantize.coarse_uniform;
-      if (!split && !refit) break;
+      // Lengths per strip can squeeze a quad flat where one factor for the mesh does not (elk at
+      // 45°, ending at feature curves): the same zero arcs, so the same base complex — tried
+      // before fitted lengths, which grow it.
+      const bool unstrip =
+          !split && options.refit_uniform && quantize.coarse_uniform && quantize.coarse_strips;
+      const bool refit =
+          !split && !unstrip && !only_flat && options.refit_uniform && quantize.coarse_uniform;
+      if (!split && !unstrip && !refit) break;
       keep_smoothed();
       // Half-arc: before fitted lengths grow the base complex, every two-gon held to arcs — the
       // half-arc optimum's other choices may be what stretched those quads.
@@ -520,11 +530,14 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
         }
       }
       if (split) quantize.extra_constraints = std::move(bounds);
+      if (unstrip) quantize.coarse_strips = false;
       if (refit) quantize.coarse_uniform = false;
       ++smoothed_rounds;
       ++r.repair_rounds;
       report("repair", split ? counted(left.to_split.size(), "quad") + " split"
-                             : "quads no split reaches: the coarse lengths fitted");
+                       : unstrip
+                           ? "quads no split reaches: one coarse factor instead of one per strip"
+                           : "quads no split reaches: the coarse lengths fitted");
     }
     if (r.half_arc && options.quantize.coarse && on_mesh && !r.collapsed.mesh.quads.empty()) {
       if (base_complex_in < 0) base_complex_in = measure_quad_mesh(*mesh).base_complex_faces;
@@ -538,6 +551,7 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
         aligning = false;
         smoothed_rounds = aligned_rounds = 0;
         quantize.coarse_uniform = options.quantize.coarse_uniform;
+        quantize.coarse_strips = options.quantize.coarse_strips;
         again = true;
       }
     }

@@ -183,7 +183,8 @@ struct QuantizeOptions {
   bool coarse_uniform = false;
   // With coarse_uniform: one integer per strip of the coarse tessellation instead of one for
   // all, each fitted to the input's size along its strip (src/tmesh/strip_lengths.hpp); the base
-  // complex is still the coarse layout's.
+  // complex is still the coarse layout's. (RequantizeOptions::refit_uniform may drop it for one
+  // factor where smoothing leaves quads bad; TMeshQuantization::strip_lengths says what was used.)
   bool coarse_strips = false;
   // ArcModelOptions::relaxed / relaxed_weight; the result is checked with
   // check_relaxed_quantization. relaxed with coarse throws std::invalid_argument.
@@ -198,6 +199,7 @@ struct TMeshQuantization {
   double objective = 0;         // of the (last) model solved
   double coarse_objective = 0;  // the coarse stage's, when coarse
   int64_t coarse_factor = 0;    // with coarse_uniform: the factor k (strips: their mean, ≥ 1)
+  bool strip_lengths = false;   // the lengths are one integer per strip (coarse_strips)
   std::vector<int64_t> arc_length;
   MinOneConstraints constraints;
   int zero_arcs = 0;

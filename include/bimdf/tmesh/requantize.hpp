@@ -69,7 +69,9 @@ struct RequantizeOptions {
   // (quantize.coarse_uniform off: the coarse layout's zero arcs kept, lengths at the target
   // density) and keep that if it leaves fewer quads inverted or degenerate. The base complex
   // then grows (separatrices no longer meet exactly); RequantizeResult::coarse_refitted says so.
-  // Counts as one of the max_split_repairs tries.
+  // Counts as one of the max_split_repairs tries. With quantize.coarse_strips, one factor for
+  // the mesh is tried first (the same zero arcs and base complex; lengths per strip can squeeze
+  // a quad flat where one factor does not), also where smoothing left only degenerate quads.
   bool refit_uniform = true;
   // Half-arc quantization (half_arc.hpp): the T-mesh is cut open along every relaxable
   // non-zero path and quantized with its two-gons; repairs, calibration, collapse (the two-gons
