@@ -501,8 +501,9 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       }
       // Quads smoothing did not right: split them by bounding the quantization and smooth the
       // new one, a few times at most (each round smooths the whole mesh again); where no split
-      // reaches them, uniform coarse lengths get fitted ones instead.
-      // Flat quads no split is made for: only other lengths can help them (below).
+      // reaches them, other lengths: strip lengths give way to one factor, and uniform coarse
+      // lengths to fitted ones (inverted quads only: those grow the base complex). Flat quads
+      // get no split, only the first.
       const bool only_flat = left.to_split.empty();
       if ((only_flat && left.degenerate_quads.empty()) ||
           smoothed_rounds >= options.max_split_repairs)
