@@ -1,9 +1,11 @@
 #include "render_command.hpp"
 
+#include <algorithm>
 #include <iostream>
 
 #include "bimdf/error.hpp"
 #include "bimdf/mesh.hpp"
+#include "bimdf/metrics.hpp"
 #include "number_checks.hpp"
 #include "output.hpp"
 
@@ -29,6 +31,10 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
       ->check(finite_number());
   cmd->add_flag("--no-edges", o.no_edges, "Do not draw the quad edges");
   cmd->add_flag("--no-patches", o.no_patches, "One colour for all quads");
+  cmd->add_flag("--base-complex", o.base_complex,
+                "Colour the patches of the mesh's base complex (traced from its singular "
+                "vertices, as `metrics` counts them) instead of the OBJ's patch groups")
+      ->excludes("--no-patches");
   cmd->add_flag("--no-singularities", o.no_singularities,
                 "Do not mark irregular vertices (valence 3 blue, 5 red, others green)");
   return cmd;
@@ -43,12 +49,17 @@ int run_render(RenderCommandOptions o) {
   o.render.draw_edges = !o.no_edges;
   o.render.colour_patches = !o.no_patches;
   o.render.mark_singularities = !o.no_singularities;
-  const QuadMesh mesh = read_obj_quads(o.mesh);
+  QuadMesh mesh = read_obj_quads(o.mesh);
   if (mesh.quads.empty()) throw InputError(o.mesh, "", "no faces: expected an OBJ quad mesh");
+  if (o.base_complex) mesh.quad_patch = base_complex_patches(mesh);
   const Image image = render_quad_mesh(mesh, o.render);
   write_output_file(o.picture, encode_png(image), {o.mesh});
   std::cout << "picture       " << o.picture << ": " << image.width << " x " << image.height
-            << " pixels, " << mesh.num_quads() << " quads\n";
+            << " pixels, " << mesh.num_quads() << " quads";
+  if (o.base_complex)
+    std::cout << ", " << *std::max_element(mesh.quad_patch.begin(), mesh.quad_patch.end()) + 1
+              << " base-complex patches";
+  std::cout << "\n";
   return kOk;
 }
 

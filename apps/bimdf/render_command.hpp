@@ -13,6 +13,7 @@ struct RenderCommandOptions {
   std::string mesh, picture;
   std::vector<double> view;  // empty: automatic
   bool no_edges = false, no_patches = false, no_singularities = false;
+  bool base_complex = false;  // colour the base complex's patches instead of the groups
   RenderOptions render;
 };
 

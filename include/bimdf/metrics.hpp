@@ -57,6 +57,13 @@ struct QuadMeshMetrics {
 // faces that face away from the reference.
 QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* reference = nullptr);
 
+// Per quad of `mesh`, the base-complex patch it lies in (0 … base_complex_faces − 1, numbered
+// in the order of their first quads): the pieces left when every separatrix is cut — traced
+// from each singular vertex straight through regular interior vertices until it reaches a
+// singular or border vertex — together with the border and non-manifold edges. The patches
+// measure_quad_mesh counts.
+std::vector<int> base_complex_patches(const QuadMesh& mesh);
+
 // What keeps a quad mesh measured as `quads` from having the topology of the triangle mesh
 // `surface` it remeshes, in words ("" when nothing does): not manifold, another Euler
 // characteristic, another number of border loops. A remesher checks this before it hands a

@@ -47,7 +47,11 @@ int edge_pieces(int n, const std::vector<Edge>& edges) {
 
 }  // namespace
 
-QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* reference) {
+namespace {
+
+// measure_quad_mesh, and (when `patch_of` is given) each quad's base-complex patch.
+QuadMeshMetrics measure(const QuadMesh& mesh, const TriangleMesh* reference,
+                        std::vector<int>* patch_of) {
   QuadMeshMetrics m;
   const int nv = mesh.num_vertices(), nf = mesh.num_quads();
   m.faces = nf;
@@ -172,6 +176,8 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
     }
   }
 
+  if (patch_of) *patch_of = patch;
+
   if (reference && reference->num_faces() > 0) {
     const detail::TriangleTree tree(*reference);
     Vec3 lo = reference->vertices[0], hi = lo;
@@ -204,6 +210,18 @@ QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* refe
     m.hausdorff_relative = diagonal > 0 ? m.hausdorff / diagonal : 0;
   }
   return m;
+}
+
+}  // namespace
+
+QuadMeshMetrics measure_quad_mesh(const QuadMesh& mesh, const TriangleMesh* reference) {
+  return measure(mesh, reference, nullptr);
+}
+
+std::vector<int> base_complex_patches(const QuadMesh& mesh) {
+  std::vector<int> patch_of;
+  measure(mesh, nullptr, &patch_of);
+  return patch_of;
 }
 
 std::string topology_difference(const QuadMeshMetrics& quads, const TriangleMesh& surface) {

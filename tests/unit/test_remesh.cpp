@@ -439,6 +439,8 @@ TEST(Metrics, GridAndCubeHaveTheirKnownNumbers) {
   EXPECT_TRUE(c.manifold());
   EXPECT_EQ(c.interior_singularities, (std::map<int, int>{{3, 8}}));
   EXPECT_EQ(c.base_complex_faces, 6);
+  EXPECT_EQ(base_complex_patches(cube), (std::vector<int>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(base_complex_patches(grid()), (std::vector<int>{0, 0, 0, 0}));
   EXPECT_DOUBLE_EQ(c.scaled_jacobian_min, 1);
   EXPECT_DOUBLE_EQ(c.scaled_jacobian_p5, 1);
   EXPECT_EQ(c.hausdorff, -1);
@@ -692,6 +694,19 @@ TEST_F(RemeshCli, TessellateReadsQuantizeOutputAndReportsBadLengths) {
   r = run("render " + path("m.obj") + " -o " + path("m.png") + " --width 320 --height 240");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(slurp(path("m.png")).substr(1, 3), "PNG");
+  // The base complex's patches coloured: as many as metrics counts, each quad in one.
+  const std::vector<int> patches = base_complex_patches(read_obj_quads(path("m.obj")));
+  ASSERT_EQ(patches.size(), 5996u);
+  EXPECT_EQ(*std::max_element(patches.begin(), patches.end()) + 1, j["base_complex_faces"]);
+  r = run("render " + path("m.obj") + " -o " + path("b.png") + " --width 320 --height 240" +
+          " --base-complex");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "picture       " + path("b.png") + ": 320 x 240 pixels, 5996 quads, " +
+                       std::to_string(j["base_complex_faces"].get<int>()) +
+                       " base-complex patches\n");
+  EXPECT_NE(slurp(path("b.png")), slurp(path("m.png")));  // other colours
+  r = run("render " + path("m.obj") + " -o " + path("c.png") + " --base-complex --no-patches");
+  EXPECT_EQ(r.exit_code, 2);
   r = run("render " + path("m.obj") + " -o " + path("m.obj"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("refusing to overwrite an input"), std::string::npos) << r.err;
