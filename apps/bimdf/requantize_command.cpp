@@ -350,6 +350,9 @@ int run_requantize(const RequantizeCommandOptions& o) {
     std::cerr << "note: uniform coarse lengths left quads inverted that no split reached; "
                  "the lengths were fitted instead (the base complex grows; "
                  "--coarse-lengths strict-uniform keeps uniform lengths)\n";
+  if (ro.quantize.coarse_strips && !q.strip_lengths && q.coarse_factor > 0)
+    std::cerr << "note: strip lengths left quads inverted or flat that no split reached; one "
+                 "coarse factor for the whole mesh was used instead (the same base complex)\n";
   s << "objective     " << q.objective << (o.coarse ? " (coarse stage " : "")
     << (o.coarse ? std::to_string(q.coarse_objective) + ")" : "") << "; " << q.zero_arcs << " of "
     << (r.half_arc ? r.half_arc->inflated.tmesh.num_arcs() : tm.num_arcs())
