@@ -27,6 +27,7 @@ from ._bimdf import (  # noqa: F401  (the public API)
     Solution,
     SolverError,
     __version__,
+    base_complex_patches,
     check,
     metrics,
     parse,
@@ -41,6 +42,6 @@ from ._bimdf import (  # noqa: F401  (the public API)
 
 __all__ = [
     "INF", "CollapseError", "Cost", "FlowCheck", "Infeasible", "InputError", "Problem",
-    "Solution", "SolverError", "__version__", "check", "metrics", "parse", "quantize", "read",
-    "read_obj", "remesh", "requantize", "solve", "write_obj",
+    "Solution", "SolverError", "__version__", "base_complex_patches", "check", "metrics", "parse",
+    "quantize", "read", "read_obj", "remesh", "requantize", "solve", "write_obj",
 ]

@@ -533,6 +533,22 @@ void bind_mesh(py::module_& m) {
       "Quality of a quad mesh as `bimdf metrics` reports it; reference: a triangle OBJ path or "
       "(V, F) of triangles or quads, for the Hausdorff distance and flipped faces.");
   m.def(
+      "base_complex_patches",
+      [](py::handle V, py::handle F) {
+        const QuadMesh mesh = quad_mesh_from_python(V, F);
+        std::vector<int> patch;
+        {
+          py::gil_scoped_release release;
+          patch = base_complex_patches(mesh);
+        }
+        py::array_t<int64_t> out(static_cast<py::ssize_t>(patch.size()));
+        std::copy(patch.begin(), patch.end(), out.mutable_data());
+        return out;
+      },
+      py::arg("V"), py::arg("F"),
+      "Per quad, the patch of the mesh's base complex it lies in (0 … base_complex_faces − 1, "
+      "as `bimdf render --base-complex` colours them).");
+  m.def(
       "read_obj",
       [](const std::string& path) {
         require_file(path);

@@ -157,6 +157,22 @@ def test_metrics_equal_the_cli(bunny_remeshed):
     assert_same_numbers(bimdf.metrics(V, F, reference=layout_triangles()), m)
 
 
+def test_base_complex_patches_are_the_ones_metrics_counts(bunny_remeshed):
+    V, F = bimdf.read_obj(str(bunny_remeshed[0]))
+    patches = bimdf.base_complex_patches(V, F)
+    assert patches.shape == (len(F),)
+    count = bimdf.metrics(V, F)["base_complex_faces"]
+    # Numbered in the order of their first quads: 0, then each new one the next number.
+    firsts = np.unique(patches, return_index=True)[1]
+    np.testing.assert_array_equal(np.unique(patches), np.arange(count))
+    assert list(np.sort(firsts)) == list(firsts)
+    # A cube: six patches, one per quad.
+    cube_V = np.array([[i & 1, i >> 1 & 1, i >> 2] for i in range(8)], dtype=np.float64)
+    cube_F = np.array([[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2],
+                       [1, 3, 7, 5]])
+    np.testing.assert_array_equal(bimdf.base_complex_patches(cube_V, cube_F), np.arange(6))
+
+
 def test_obj_round_trip(tmp_path):
     V = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=np.float64)
     F = np.array([[0, 1, 2, 3]])
