@@ -45,10 +45,6 @@ int edge_pieces(int n, const std::vector<Edge>& edges) {
   return pieces;
 }
 
-}  // namespace
-
-namespace {
-
 // measure_quad_mesh, and (when `patch_of` is given) each quad's base-complex patch.
 QuadMeshMetrics measure(const QuadMesh& mesh, const TriangleMesh* reference,
                         std::vector<int>* patch_of) {
