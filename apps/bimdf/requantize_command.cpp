@@ -120,6 +120,11 @@ CLI::App* add_requantize_command(CLI::App& app, RequantizeCommandOptions& o) {
   cmd->add_flag("--keep-crossings", o.keep_crossings,
                 "With bounded half-arc quantization: no drift where a path crosses another line "
                 "(only T-junctions trade places; straight lines of the layout stay straight)");
+  cmd->add_flag("--hold-angle-bound", o.hold_angle_bound,
+                "With half-arc quantization and an angle bound (--coarse or --max-angle): where "
+                "the two sides of paths drift so far that a separatrix between singular vertices "
+                "turns past the bound (measured after each collapse), hold those paths to the arc "
+                "quantization and solve again, so that the bound holds (costs patches)");
   cmd->add_option("--max-angle", o.max_angle,
                   "Trace the angle-bounded extended motorcycle graph (Lyon et al. 2021): "
                   "separatrices may deviate from the input's grid lines by at most this many "
@@ -197,6 +202,12 @@ int run_requantize(const RequantizeCommandOptions& o) {
     throw UsageError{
         "--reorder-weight and --keep-crossings need bounded half-arc quantization "
         "(--half-arc bounded, or --coarse)"};
+  ro.hold_angle_bound = o.hold_angle_bound;
+  if (o.hold_angle_bound &&
+      (half_arc == "off" || !o.tmesh_in.empty() || (!o.coarse && o.max_angle < 0)))
+    throw UsageError{
+        "--hold-angle-bound applies to half-arc quantization of angle-bounded traces of a quad "
+        "mesh (--coarse or --max-angle, not --tmesh-in or --half-arc off)"};
   if (!o.feature_traces.empty() && (!o.tmesh_in.empty() || (!o.coarse && o.max_angle < 0)))
     throw UsageError{
         "--feature-traces applies to the angle-bounded traces of a quad mesh (--coarse or "

@@ -27,6 +27,7 @@ struct RequantizeCommandOptions {
   std::string half_arc = "auto";  // --half-arc exact|bounded|off|auto (resolved in run)
   double reorder_weight = 1;      // --reorder-weight, with --half-arc bounded
   bool keep_crossings = false;    // --keep-crossings, with --half-arc bounded
+  bool hold_angle_bound = false;  // --hold-angle-bound, with half-arc and an angle bound
   bool compare_greedy = false;    // --compare-greedy
   double max_angle = -1;  // < 0: not given (--coarse then uses tmesh::kDefaultCoarseMaxAngle)
   std::string feature_traces;  // --feature-traces cross|stop|auto; "": not given (auto)

@@ -317,7 +317,7 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
                      double sharp_angle, const std::string& cost, const std::string& coarse_lengths,
                      bool calibrate, int smooth_iterations, double smooth_damping,
                      int quality_rounds, int threads, const std::string& half_arc,
-                     double reorder_weight, bool keep_crossings,
+                     double reorder_weight, bool keep_crossings, bool hold_angle_bound,
                      const std::string& feature_traces) {
   const auto start = std::chrono::steady_clock::now();
   const QuadMesh mesh = quad_mesh_from_python(V, F);
@@ -367,6 +367,11 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   if ((keep_crossings || reorder_weight != 1) && half_arc_used != "bounded")
     throw py::value_error("reorder_weight and keep_crossings need bounded half-arc quantization");
   ro.keep_crossings = keep_crossings;
+  if (hold_angle_bound && (half_arc_used == "off" || (!coarse && !max_angle)))
+    throw py::value_error(
+        "hold_angle_bound needs half-arc quantization and an angle bound "
+        "(coarse or max_angle)");
+  ro.hold_angle_bound = hold_angle_bound;
   ro.quantize.threads = threads;
   ro.smoothing = smoothing_options(smooth_iterations, smooth_damping, quality_rounds);
   ro.trace.sharp_angle_deg = sharp_angle;
@@ -501,21 +506,21 @@ void bind_mesh(py::module_& m) {
         "pairs of opposite singularities left out of the parametrization, as --cancel-pairs; the "
         "report's 'layout' says how it was made). Returns (V, F, report): "
         "vertices float64 (n, 3), quads int64 (m, 4), the report dict.");
-  m.def("requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(),
-        py::arg("scale") = 1.0, py::arg("edge_length") = py::none(),
-        py::arg("target_faces") = py::none(), py::arg("coarse") = false,
-        py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
-        py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0,
-        py::arg("cost") = "quadratic", py::arg("coarse_lengths") = "strips",
-        py::arg("calibrate") = true, py::arg("smooth_iterations") = 30,
-        py::arg("smooth_damping") = 0.5, py::arg("quality_rounds") = 30, py::arg("threads") = 1,
-        py::arg("half_arc") = "auto", py::arg("reorder_weight") = 1.0,
-        py::arg("keep_crossings") = false, py::arg("feature_traces") = "auto",
-        "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
-        "coarse=True the coarsest layout the separation constraints allow; half_arc: 'auto' — "
-        "bounded with coarse, else off —, 'exact', 'bounded' or 'off'; feature_traces: 'cross', "
-        "'stop' or 'auto' — with coarse both, the smaller base complex kept unless its quads are "
-        "worse —, as --feature-traces). Returns (V, F, report).");
+  m.def(
+      "requantize", &requantize, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("scale") = 1.0,
+      py::arg("edge_length") = py::none(), py::arg("target_faces") = py::none(),
+      py::arg("coarse") = false, py::arg("max_angle") = py::none(), py::arg("relaxed") = false,
+      py::arg("relaxed_weight") = 1.0, py::arg("sharp_angle") = 35.0, py::arg("cost") = "quadratic",
+      py::arg("coarse_lengths") = "strips", py::arg("calibrate") = true,
+      py::arg("smooth_iterations") = 30, py::arg("smooth_damping") = 0.5,
+      py::arg("quality_rounds") = 30, py::arg("threads") = 1, py::arg("half_arc") = "auto",
+      py::arg("reorder_weight") = 1.0, py::arg("keep_crossings") = false,
+      py::arg("hold_angle_bound") = false, py::arg("feature_traces") = "auto",
+      "Re-quantizes a quad mesh's layout as `bimdf requantize` does (new density, or with "
+      "coarse=True the coarsest layout the separation constraints allow; half_arc: 'auto' — "
+      "bounded with coarse, else off —, 'exact', 'bounded' or 'off'; feature_traces: 'cross', "
+      "'stop' or 'auto' — with coarse both, the smaller base complex kept unless its quads are "
+      "worse —, as --feature-traces). Returns (V, F, report).");
   m.def(
       "metrics",
       [](py::handle V, py::handle F, py::handle reference) {

@@ -198,6 +198,9 @@ def test_mesh_errors_are_the_documented_exceptions(tmp_path):
     with pytest.raises(ValueError, match=r"^reorder_weight and keep_crossings need bounded "
                                          r"half-arc quantization$"):
         bimdf.requantize(V, np.array([[0, 1, 2, 3]]), reorder_weight=2.0)
+    with pytest.raises(ValueError, match=r"^hold_angle_bound needs half-arc quantization and an "
+                                         r"angle bound \(coarse or max_angle\)$"):
+        bimdf.requantize(V, np.array([[0, 1, 2, 3]]), hold_angle_bound=True)
     with pytest.raises(ValueError, match=r"^feature_traces must be 'cross', 'stop' or 'auto'$"):
         bimdf.requantize(V, np.array([[0, 1, 2, 3]]), feature_traces="both")
     with pytest.raises(ValueError, match=r"^feature_traces applies to the angle-bounded traces"):

@@ -310,6 +310,27 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
                                 : "a vertex lost its valence in the collapse: bounded");
         continue;
       }
+      // Half-arc under an angle bound: the model bounds no drift (a two-gon's sides may slide
+      // past each other by any amount), so a separatrix crossing a drifting two-gon can turn
+      // past the bound the traces kept. Measured here, on the collapse's grid places (before
+      // smoothing, cheap): the two-gons along such separatrices are held to the arc
+      // quantization and the T-mesh solved again, until none turns past it or all are held.
+      if (r.half_arc && options.hold_angle_bound && on_mesh && options.trace.max_angle_deg >= 0 &&
+          options.trace.max_angle_deg < 90) {
+        const double bound = options.trace.max_angle_deg;
+        const SeparatrixDeviation d = measure_separatrix_deviation(*mesh, tm, r.collapsed, bound);
+        if (d.over_bound > 0) {
+          std::vector<int> patches;
+          for (const SeparatrixDeviation::Measured& line : d.separatrices)
+            if (!line.to_border && line.deg > bound + 1e-9)
+              patches.insert(patches.end(), line.patches.begin(), line.patches.end());
+          if (const std::vector<int> two_gons = unaligned(patches, false); !two_gons.empty()) {
+            align(two_gons, counted(d.over_bound, "separatrix", "separatrices") +
+                                " turned past the angle bound");
+            continue;
+          }
+        }
+      }
       r.repair_constraints = quantize.extra_constraints;
       if (options.give_up_at_base_complex > 0 && !smoothed) {
         const int patches = measure_quad_mesh(r.collapsed.mesh).base_complex_faces;

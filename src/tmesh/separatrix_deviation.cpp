@@ -247,6 +247,7 @@ SeparatrixDeviation measure_separatrix_deviation(const QuadMesh& input, const TM
       };
       if (have_start) last = start.x;
       int from = s, e = e0, to = -1;
+      std::vector<int> line_patches;
       while (true) {
         traced[e] = 1;
         int h = topo.edge_half_edges(e)[0];
@@ -261,6 +262,7 @@ SeparatrixDeviation measure_separatrix_deviation(const QuadMesh& input, const TM
         const Place tail = walker.place_in_patch(p, collapsed.quad_grid_uv[q][k], quarters);
         std::vector<int> patches = collapsed.origin[from].patches;
         patches.push_back(p);
+        line_patches.insert(line_patches.end(), patches.begin(), patches.end());
         if (!move_to(tail, patches, from == s ? start_vertex : -1)) break;
         // The output edge runs along patch axis k (0: +u, 1: +v, 2: −u, 3: −v).
         const Vec2 along = turn(turn(kDirection[k], quarters), to_start.quarters);
@@ -278,6 +280,10 @@ SeparatrixDeviation measure_separatrix_deviation(const QuadMesh& input, const TM
         }
         from = to, e = next;
       }
+      if (ok) {
+        const std::vector<int>& at_end = collapsed.origin[to].patches;
+        line_patches.insert(line_patches.end(), at_end.begin(), at_end.end());
+      }
       if (ok && singular(to)) {
         const int end_vertex = singular_input_vertex(to);
         if (end_vertex >= 0)
@@ -292,7 +298,9 @@ SeparatrixDeviation measure_separatrix_deviation(const QuadMesh& input, const TM
       const double across = axis[0] * d[1] - axis[1] * d[0];
       const double deg = std::atan2(std::abs(across), along) * 180 / std::numbers::pi;
       ++result.measured;
-      result.separatrices.push_back({s, to, !singular(to), deg});
+      std::sort(line_patches.begin(), line_patches.end());
+      line_patches.erase(std::unique(line_patches.begin(), line_patches.end()), line_patches.end());
+      result.separatrices.push_back({s, to, !singular(to), deg, std::move(line_patches)});
       if (!singular(to)) {
         result.max_to_border_deg = std::max(result.max_to_border_deg, deg);
         continue;

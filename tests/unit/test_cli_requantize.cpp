@@ -575,13 +575,20 @@ TEST_F(Requantize, BadInput) {
   r = run("requantize " + grid + " -o " + path("out.obj") + " --half-arc exact --relaxed");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("excludes"), std::string::npos) << r.err;
-  for (const char* extra : {" --feature-traces stop", " --feature-traces auto --scale 2"}) {
+  const std::string feature_traces_error =
+      "error: --feature-traces applies to the angle-bounded traces of a quad mesh (--coarse or "
+      "--max-angle, not --tmesh-in)\n";
+  const std::string hold_error =
+      "error: --hold-angle-bound applies to half-arc quantization of angle-bounded traces of a "
+      "quad mesh (--coarse or --max-angle, not --tmesh-in or --half-arc off)\n";
+  for (const auto& [extra, error] : std::vector<std::pair<std::string, std::string>>{
+           {" --feature-traces stop", feature_traces_error},
+           {" --feature-traces auto --scale 2", feature_traces_error},
+           {" --hold-angle-bound", hold_error},
+           {" --coarse --half-arc off --hold-angle-bound", hold_error}}) {
     r = run("requantize " + grid + " -o " + path("out.obj") + extra);
     EXPECT_EQ(r.exit_code, 2) << extra;
-    EXPECT_EQ(r.err,
-              "error: --feature-traces applies to the angle-bounded traces of a quad mesh "
-              "(--coarse or --max-angle, not --tmesh-in)\n")
-        << extra;
+    EXPECT_EQ(r.err, error) << extra;
   }
   r = run("requantize " + grid + " -o " + path("out.obj") + " --feature-traces trace");
   EXPECT_EQ(r.exit_code, 2);

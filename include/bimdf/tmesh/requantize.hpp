@@ -81,6 +81,11 @@ struct RequantizeOptions {
   // two sides at one of its vertices costing this much (HalfArcSetup::reorder_weight).
   double reorder_weight = -1;
   bool keep_crossings = false;  // HalfArcSetup::keep_crossings (bounded only)
+  // With half_arc and trace.max_angle_deg in [0, 90): after each collapse, the two-gons along
+  // separatrices that turn past the bound (measure_separatrix_deviation) are held to the arc
+  // quantization and the T-mesh quantized again (requantize_tmesh). Off: the bound is reported,
+  // not kept, where drift breaks it (the paper's half-arc: no angle guarantee).
+  bool hold_angle_bound = false;
   // Angle-bounded tracing only (requantize, not requantize_tmesh): see FeatureTraces. With Auto,
   // trace.cross_features is ignored; otherwise Cross and Stop set it.
   FeatureTraces feature_traces = FeatureTraces::Cross;

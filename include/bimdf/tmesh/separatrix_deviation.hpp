@@ -48,11 +48,14 @@ struct SeparatrixDeviation {
   double bound_deg = -1;  // the bound measured against (< 0: none, and over_bound is 0)
   int over_bound = 0;     // between singular vertices and above the bound (1e-9 slack)
   // Every measured separatrix: its output vertices (start, end), whether it ends at the border
-  // (at a vertex that is not singular), and its deviation; in order of the start vertex.
+  // (at a vertex that is not singular), its deviation, and the T-mesh patches it runs through
+  // (those of its quads and of its vertices' classes, CollapsedVertex::patches; sorted); in
+  // order of the start vertex.
   struct Measured {
     int from = -1, to = -1;
     bool to_border = false;
     double deg = 0;
+    std::vector<int> patches;
   };
   std::vector<Measured> separatrices;
 };
