@@ -202,13 +202,14 @@ int run_requantize(const RequantizeCommandOptions& o) {
     throw UsageError{
         "--reorder-weight and --keep-crossings need bounded half-arc quantization "
         "(--half-arc bounded, or --coarse)"};
+  // Angle-bounded traces of the quad mesh given (not a T-mesh read in).
+  const bool angle_bounded = o.tmesh_in.empty() && (o.coarse || o.max_angle >= 0);
   ro.hold_angle_bound = o.hold_angle_bound;
-  if (o.hold_angle_bound &&
-      (half_arc == "off" || !o.tmesh_in.empty() || (!o.coarse && o.max_angle < 0)))
+  if (o.hold_angle_bound && (half_arc == "off" || !angle_bounded))
     throw UsageError{
         "--hold-angle-bound applies to half-arc quantization of angle-bounded traces of a quad "
         "mesh (--coarse or --max-angle, not --tmesh-in or --half-arc off)"};
-  if (!o.feature_traces.empty() && (!o.tmesh_in.empty() || (!o.coarse && o.max_angle < 0)))
+  if (!o.feature_traces.empty() && !angle_bounded)
     throw UsageError{
         "--feature-traces applies to the angle-bounded traces of a quad mesh (--coarse or "
         "--max-angle, not --tmesh-in)"};

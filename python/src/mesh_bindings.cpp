@@ -323,7 +323,8 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   const QuadMesh mesh = quad_mesh_from_python(V, F);
   if (feature_traces != "cross" && feature_traces != "stop" && feature_traces != "auto")
     throw py::value_error("feature_traces must be 'cross', 'stop' or 'auto'");
-  if (feature_traces != "auto" && !coarse && !max_angle)
+  const bool angle_bounded = coarse || max_angle.has_value();
+  if (feature_traces != "auto" && !angle_bounded)
     throw py::value_error(
         "feature_traces applies to the angle-bounded traces (coarse=True or max_angle)");
   if (int(scale != 1) + int(bool(edge_length)) + int(bool(target_faces)) > 1)
@@ -367,7 +368,7 @@ py::tuple requantize(py::handle V, py::handle F, double scale, std::optional<dou
   if ((keep_crossings || reorder_weight != 1) && half_arc_used != "bounded")
     throw py::value_error("reorder_weight and keep_crossings need bounded half-arc quantization");
   ro.keep_crossings = keep_crossings;
-  if (hold_angle_bound && (half_arc_used == "off" || (!coarse && !max_angle)))
+  if (hold_angle_bound && (half_arc_used == "off" || !angle_bounded))
     throw py::value_error(
         "hold_angle_bound needs half-arc quantization and an angle bound "
         "(coarse or max_angle)");

@@ -89,7 +89,8 @@ RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& m
   options.trace.cross_features = false;
   // Only a coarser layout can win: give up before smoothing (the costly part, and where
   // couplingdown's traces ending at curves spend minutes in repairs) when it is not.
-  options.give_up_at_base_complex = measure_quad_mesh(cross.collapsed.mesh).base_complex_faces;
+  const QuadMeshMetrics cross_metrics = measure_quad_mesh(cross.collapsed.mesh);
+  options.give_up_at_base_complex = cross_metrics.base_complex_faces;
   const RequantizeOptions with_repairs = options;
   // One smoothing, no repairs after it, at first: a run that leaves quads inverted loses to one
   // that does not anyway, and its repairs (each a smoothing again) took couplingdown at 10° from
@@ -114,7 +115,7 @@ RequantizeResult compare_feature_stops(RequantizeResult cross, const QuadMesh& m
     if (stop.given_up_at_base_complex <= 0 && !stop.collapsed.mesh.quads.empty() &&
         !cross.collapsed.mesh.quads.empty() &&
         (with_repairs.max_split_repairs > 0 || with_repairs.refit_uniform) &&
-        stop_wins_but_for_bad_quads(cross, measure_quad_mesh(cross.collapsed.mesh), stop,
+        stop_wins_but_for_bad_quads(cross, cross_metrics, stop,
                                     measure_quad_mesh(stop.collapsed.mesh),
                                     options.coarser_quality_slack)) {
       report("repair",

@@ -211,6 +211,10 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     report("repair", why + ": " + counted(aligned, "two-gon") + " held to the arc quantization");
   };
   const bool on_mesh = mesh && !tm.patch_grid.empty();
+  // The angle bound the separatrices are measured against (< 0: none; 90 bounds nothing).
+  const double angle_bound = options.trace.max_angle_deg >= 0 && options.trace.max_angle_deg < 90
+                                 ? options.trace.max_angle_deg
+                                 : -1;
   QuantizeOptions quantize = options.quantize;
   const auto quantize_once = [&] {
     return r.half_arc ? quantize_inflated(*r.half_arc, quantize)
@@ -315,9 +319,8 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
       // past the bound the traces kept. Measured here, on the collapse's grid places (before
       // smoothing, cheap): the two-gons along such separatrices are held to the arc
       // quantization and the T-mesh solved again, until none turns past it or all are held.
-      if (r.half_arc && options.hold_angle_bound && on_mesh && options.trace.max_angle_deg >= 0 &&
-          options.trace.max_angle_deg < 90) {
-        const double bound = options.trace.max_angle_deg;
+      if (r.half_arc && options.hold_angle_bound && on_mesh && angle_bound >= 0) {
+        const double bound = angle_bound;
         const SeparatrixDeviation d = measure_separatrix_deviation(*mesh, tm, r.collapsed, bound);
         if (d.over_bound > 0) {
           std::vector<int> patches;
@@ -447,10 +450,8 @@ RequantizeResult requantize_tmesh(TracedTMesh traced, const QuadMesh* mesh,
     for (int a = 0; a < r.traced.tmesh.num_arcs(); ++a)
       r.traced.tmesh.arc_target[a] = tm.arc_target[a];
   }
-  if (on_mesh && !r.collapsed.mesh.quads.empty()) {
-    const double bound = options.trace.max_angle_deg;
-    r.deviation = measure_separatrix_deviation(*mesh, r, bound >= 0 && bound < 90 ? bound : -1);
-  }
+  if (on_mesh && !r.collapsed.mesh.quads.empty())
+    r.deviation = measure_separatrix_deviation(*mesh, r, angle_bound);
   return r;
 }
 
